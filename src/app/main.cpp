@@ -1,0 +1,77 @@
+// The `tunica` command line: run, check and reference.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+
+#include "io/deck.hpp"
+#include "io/reference.hpp"
+#include "output/run_writer.hpp"
+#include "solver/analysis.hpp"
+
+namespace {
+
+constexpr int kInputErrorExit = 2;
+constexpr int kSolveErrorExit = 3;
+constexpr int kOtherErrorExit = 4;
+
+int run(const std::string& deck, const std::string& out, bool quiet) {
+  const tunica::Model model = tunica::read_deck(deck);
+  tunica::RunWriter writer(model, out, quiet ? nullptr : stdout);
+  tunica::Analysis analysis(model);
+  const auto t0 = std::chrono::steady_clock::now();
+  analysis.run(writer);
+  if (!quiet)
+    std::printf("done in %.3f s; results in %s\n",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), out.c_str());
+  return 0;
+}
+
+int check(const std::string& deck) {
+  const tunica::Model model = tunica::read_deck(deck);
+  int elements = 0;
+  for (const auto& p : model.parts) elements += static_cast<int>(p.elements.size());
+  std::printf("%s: valid deck: %zu material(s), %zu part(s), %d node(s), %d element(s), %zu boundary set(s), "
+              "%zu load(s), %zu step(s), %zu history column(s)\n",
+              deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,
+              model.boundaries.size(), model.loads.size(), model.steps.size(), model.output.history.size());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Tunica: large-strain analysis of thin incompressible hyperelastic membranes"};
+  app.set_version_flag("--version", std::string(TUNICA_VERSION));
+  app.require_subcommand(1);
+  std::string deck, out;
+  bool quiet = false;
+  auto* run_cmd = app.add_subcommand("run", "solve a deck and write results");
+  run_cmd->add_option("deck", deck, "YAML deck")->required();
+  run_cmd->add_option("-o,--output", out, "output directory")->required();
+  run_cmd->add_flag("-q,--quiet", quiet, "no progress output");
+  auto* check_cmd = app.add_subcommand("check", "validate a deck without solving");
+  check_cmd->add_option("deck", deck, "YAML deck")->required();
+  auto* ref_cmd = app.add_subcommand("reference", "print the deck reference (Markdown), generated from the declarations");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*run_cmd) return run(deck, out, quiet);
+    if (*check_cmd) return check(deck);
+    if (*ref_cmd) {
+      std::fputs(tunica::deck_reference_markdown().c_str(), stdout);
+      return 0;
+    }
+  } catch (const tunica::InputError& e) {
+    std::fprintf(stderr, "tunica: input error: %s\n", e.what());
+    return kInputErrorExit;
+  } catch (const tunica::SolveError& e) {
+    std::fprintf(stderr, "tunica: the run stopped: %s\n", e.what());
+    return kSolveErrorExit;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tunica: error: %s\n", e.what());
+    return kOtherErrorExit;
+  }
+  return 0;
+}

@@ -1,0 +1,64 @@
+#include "elements/axisym_membrane.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace tunica {
+
+void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const MembraneMaterial& material,
+                     Eigen::Vector4d& f, Eigen::Matrix4d* K, std::array<MembranePoint, 2>* points) {
+  const Eigen::Vector2d dX = X.col(1) - X.col(0);
+  const Eigen::Vector2d dx = x.col(1) - x.col(0);
+  const double L2 = dX.squaredNorm();
+  const double L = std::sqrt(L2);
+  const double l2 = dx.squaredNorm();
+  if (!(l2 > 0)) throw std::domain_error("axisymmetric membrane: element collapsed to a point");
+
+  // Meridional strain: E_s = ½(ℓ²/L² − 1), ∂E_s/∂u = (−Δx, Δx)/L², ∂²E_s/∂u² = [[I, −I], [−I, I]]/L².
+  const double Es = 0.5 * (l2 / L2 - 1.0);
+  Eigen::Vector4d Bs;
+  Bs << -dx, dx;
+  Bs /= L2;
+
+  f.setZero();
+  if (K) K->setZero();
+  const double g = 0.5 / std::sqrt(3.0);
+  const double xi[2] = {0.5 - g, 0.5 + g};
+  for (int q = 0; q < 2; ++q) {
+    const double N0 = 1.0 - xi[q], N1 = xi[q];
+    const double R = N0 * X(0, 0) + N1 * X(0, 1);
+    const double r = N0 * x(0, 0) + N1 * x(0, 1);
+    if (!(r > 0)) throw std::domain_error("axisymmetric membrane: radius not positive at a Gauss point");
+    // Hoop strain: E_θ = ½(r²/R² − 1), ∂E_θ/∂u = r N_r / R², ∂²E_θ/∂u² = N_r N_rᵀ / R².
+    const double Et = 0.5 * (r * r / (R * R) - 1.0);
+    const Eigen::Vector4d Nr(N0, 0.0, N1, 0.0);
+    const Eigen::Vector4d Bt = (r / (R * R)) * Nr;
+
+    const MembraneResponse m = membrane_response(material, Eigen::Vector3d(2.0 * Et + 1.0, 2.0 * Es + 1.0, 0.0));
+    const double w = 0.5 * L * H * 2.0 * std::numbers::pi * R;  // Gauss weight × dV₀
+    f += w * (m.S(0) * Bt + m.S(1) * Bs);
+    if (K) {
+      *K += w * (m.D(0, 0) * Bt * Bt.transpose() + m.D(0, 1) * Bt * Bs.transpose() +
+                 m.D(1, 0) * Bs * Bt.transpose() + m.D(1, 1) * Bs * Bs.transpose());
+      *K += w * (m.S(0) / (R * R)) * Nr * Nr.transpose();
+      Eigen::Matrix4d Gs;
+      Gs << Eigen::Matrix2d::Identity(), -Eigen::Matrix2d::Identity(), -Eigen::Matrix2d::Identity(),
+          Eigen::Matrix2d::Identity();
+      *K += w * (m.S(1) / L2) * Gs;
+    }
+    if (points) {
+      MembranePoint& p = (*points)[q];
+      p.R = R;
+      p.r = r;
+      p.z = N0 * x(1, 0) + N1 * x(1, 1);
+      p.lambda = Eigen::Vector3d(r / R, std::sqrt(l2 / L2), std::sqrt(m.C33));
+      p.E = Eigen::Vector2d(Et, Es);
+      p.S = m.S.head<2>();
+      p.sigma = Eigen::Vector2d(p.lambda(0) * p.lambda(0) * m.S(0), p.lambda(1) * p.lambda(1) * m.S(1));
+      p.thickness = p.lambda(2) * H;
+    }
+  }
+}
+
+}  // namespace tunica

@@ -1,0 +1,35 @@
+#pragma once
+// Two-node axisymmetric membrane element (THEORY §4, the paper's element).
+// Nodes carry (r, z); DOFs per element are (u_r1, u_z1, u_r2, u_z2).
+// Direction 1 is the hoop direction, direction 2 the meridian. At each of the
+// two Gauss points: λ_s = ℓ/L, λ_θ = r/R,
+//   internal work  ∫ (S_s δE_s + S_θ δE_θ) H 2πR dS,
+//   δE_s = Δx·Δη / L²,  δE_θ = r η_r / R².
+#include <Eigen/Dense>
+#include <array>
+
+#include "materials/membrane_material.hpp"
+
+namespace tunica {
+
+/// Nodal coordinates of a 2-node axisymmetric element: column a = (r_a, z_a).
+using AxisymNodes = Eigen::Matrix2d;
+
+/// The state at one Gauss point, for output.
+struct MembranePoint {
+  double R = 0, r = 0, z = 0;      ///< reference and current radius, current axial position
+  Eigen::Vector3d lambda;          ///< stretches (λ1 hoop, λ2 meridional, λ3 thickness)
+  Eigen::Vector2d E;               ///< Green–Lagrange strains (E1, E2)
+  Eigen::Vector2d S;               ///< 2nd Piola–Kirchhoff stresses (S1, S2)
+  Eigen::Vector2d sigma;           ///< Cauchy stresses σ_α = λ_α² S_α
+  double thickness = 0;            ///< current thickness h = λ3 H
+};
+
+/// Internal force f (4) and, if K is given, the tangent K = ∂f/∂u (4×4, material
+/// + geometric) of one element with reference nodes X, current nodes x and
+/// reference thickness H. `points`, if given, receives the Gauss-point states.
+/// Throws std::domain_error if a stretch is not positive.
+void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const MembraneMaterial& material,
+                     Eigen::Vector4d& f, Eigen::Matrix4d* K, std::array<MembranePoint, 2>* points = nullptr);
+
+}  // namespace tunica

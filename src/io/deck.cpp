@@ -1,0 +1,455 @@
+#include "io/deck.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "mesh/meridian.hpp"
+
+namespace tunica {
+
+namespace {
+
+const ComponentSpec& units_spec() {
+  static const ComponentSpec s{"units", "",
+                               "The deck's unit system. Bare numbers are in these units; stress and "
+                               "pressure are force/length², angles radians. Any value may carry its own "
+                               "unit instead (`0.122 mm`, `200 mmHg`, `61.163 kPa`, `90 deg`).",
+                               {required(text("length", "length unit, e.g. mm")),
+                                required(text("force", "force unit, e.g. N"))}};
+  return s;
+}
+
+const ComponentSpec& part_spec() {
+  static const ComponentSpec s{
+      "parts", "",
+      "A body: its element type, material, reference thickness and generated meridian mesh. "
+      "Every part gets the node sets `<part>.start`, `<part>.end` and `<part>.all`.",
+      {required(one_of(text("element", "element type"), {"axisymmetric_membrane"})),
+       required(text("material", "name of a material in `materials`")),
+       required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
+       text("mesh", "a map with `type: line` or `type: arc` and that generator's keys (see Meshes)")}};
+  return s;
+}
+
+const ComponentSpec& node_set_spec() {
+  static const ComponentSpec s{
+      "node_sets", "",
+      "A named set of nodes: the `nodes` of a `part` (`start`, `end`, `all`, or a list of indices along "
+      "its meridian, 0 = start).",
+      {required(text("part", "name of a part")), text("nodes", "`start`, `end`, `all` or a list of indices")}};
+  return s;
+}
+
+const ComponentSpec& boundary_spec() {
+  static const ComponentSpec s{
+      "boundary", "",
+      "A prescribed displacement of some DOFs of a node set: 0 until a step sets it, then ramped "
+      "linearly within the step to the value the step's `set` gives, and held after.",
+      {required(text("node_set", "name of a node set")),
+       text("dofs", "list of DOFs among `r` and `z`")}};
+  return s;
+}
+
+const ComponentSpec& load_spec() {
+  static const ComponentSpec s{
+      "loads", "pressure",
+      "Follower pressure on the current surface of a part, with its consistent (nonsymmetric) load "
+      "stiffness. Positive pressure acts along n = (dz/ds, −dr/ds), s running along the meridian in "
+      "node order: outwards for a tube meshed towards +z or a balloon meshed from the lower to the "
+      "upper pole. Its magnitude is 0 until a step sets it and is ramped like a boundary value.",
+      {required(one_of(text("type", "load type"), {"pressure"})), required(text("part", "name of a part")),
+       with_default(boolean("flip", "act along −n instead"), "false")}};
+  return s;
+}
+
+const ComponentSpec& solver_spec() {
+  static const ComponentSpec s{
+      "solver", "",
+      "Newton–Raphson and increment control; at the top level for all steps, or inside a step for that step.",
+      {with_default(at_least(integer("max_iterations", "Newton iterations allowed per increment"), 1), "12"),
+       with_default(positive(number("residual_tolerance", Dimension::dimensionless,
+                                    "convergence when ‖R‖ ≤ tol · ‖R₀‖ (R₀: residual at the start of the increment)")),
+                    "1e-9"),
+       with_default(positive(number("energy_tolerance", Dimension::dimensionless,
+                                    "and |Δu·R| ≤ tol · |Δu₁·R₀| (energy norm)")),
+                    "1e-18"),
+       with_default(at_most(at_least(integer("max_cutbacks", "times an increment may be halved and retried"), 0), 30),
+                    "5"),
+       with_default(one_of(text("linear_solver", "sparse direct solver"), {"umfpack", "sparse_lu"}), "umfpack")}};
+  return s;
+}
+
+const ComponentSpec& step_spec() {
+  static const ComponentSpec s{
+      "steps", "",
+      "One load step: the targets it ramps to, in equal increments.",
+      {with_default(text("name", "name shown in progress and output"), "step"),
+       required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
+       text("set", "map from boundary or load names to their values at the end of the step"),
+       text("solver", "overrides of the top-level `solver` keys for this step")}};
+  return s;
+}
+
+const ComponentSpec& history_spec() {
+  static const ComponentSpec s{
+      "output.history", "",
+      "One column of history.csv, written after each converged increment. The column is `name` "
+      "(default: the quantity) followed by `_<unit>` for dimensional quantities.",
+      {required(text("quantity", "what to record (see the table of quantities)")),
+       text("name", "column name without the unit suffix"), text("part", "part, for element quantities"),
+       text("node_set", "node set, for node quantities"), text("load", "load, for `pressure`"),
+       one_of(text("reduce", "how several points combine (default: sum for reactions, mean otherwise)"),
+              {"mean", "min", "max", "sum"}),
+       text("unit", "output unit (default: the deck's unit of that dimension)")}};
+  return s;
+}
+
+const ComponentSpec& output_spec() {
+  static const ComponentSpec s{
+      "output", "", "What a run writes besides newton.csv.",
+      {text("history", "list of history columns (see output.history)"),
+       with_default(boolean("vtk", "write ParaView files (.vtu per increment, .pvd series)"), "true"),
+       with_default(at_most(at_least(integer("vtk_segments", "hoop subdivisions of the revolved surface"), 3), 1000),
+                    "48")}};
+  return s;
+}
+
+const std::vector<std::string> kTopKeys = {"title", "units", "materials", "parts", "node_sets",
+                                           "boundary", "loads", "solver", "steps", "output"};
+
+SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSettings base) {
+  if (!node.defined()) return base;
+  node.expect_map_with_keys([] {
+    std::vector<std::string> k;
+    for (const auto& p : solver_spec().params) k.push_back(p.name);
+    return k;
+  }());
+  // Keys not given keep the base values: read only the present ones.
+  for (const auto& [key, value] : node.entries()) {
+    ComponentSpec one = solver_spec();
+    one.params.erase(std::remove_if(one.params.begin(), one.params.end(), [&](const ParamSpec& p) { return p.name != key; }),
+                     one.params.end());
+    YAML::Node single;
+    single[key] = value.yaml();
+    const Params p = read_params(DeckNode(single, node.file(), node.path(), node.where()), one, u);
+    if (key == "max_iterations") base.max_iterations = static_cast<int>(p.integer(key));
+    if (key == "residual_tolerance") base.residual_tolerance = p.number(key);
+    if (key == "energy_tolerance") base.energy_tolerance = p.number(key);
+    if (key == "max_cutbacks") base.max_cutbacks = static_cast<int>(p.integer(key));
+    if (key == "linear_solver") base.linear_solver = p.text(key);
+  }
+  return base;
+}
+
+/// The spec without the parameters that are structured (lists, maps) and read by hand.
+ComponentSpec scalar_part(const ComponentSpec& s, std::initializer_list<const char*> structured) {
+  ComponentSpec out = s;
+  out.params.erase(std::remove_if(out.params.begin(), out.params.end(),
+                                  [&](const ParamSpec& p) {
+                                    return std::find_if(structured.begin(), structured.end(),
+                                                        [&](const char* k) { return p.name == k; }) != structured.end();
+                                  }),
+                   out.params.end());
+  return out;
+}
+
+std::vector<std::string> names(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
+
+void read_parts(const DeckNode& deck, Model& m) {
+  const DeckNode parts = deck.required("parts");
+  if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
+  for (const auto& [name, node] : parts.entries()) {
+    const Params p = read_params(node, scalar_part(part_spec(), {"mesh"}), m.units, names({"mesh"}));
+    Part part;
+    part.name = name;
+    part.element = p.text("element");
+    part.thickness = p.number("thickness");
+    part.material_name = p.text("material");
+    auto mat = m.materials.find(part.material_name);
+    if (mat == m.materials.end())
+      p.fail("material", "undefined material '" + part.material_name + "' (not in `materials`)");
+    part.material = mat->second.get();
+
+    const DeckNode mesh = node.required("mesh");
+    if (!mesh.is_map()) mesh.fail("expected a map with `type: line` or `type: arc`");
+    const std::string type = mesh.required("type").as_string();
+    auto gen = meridian_types().find(type);
+    if (gen == meridian_types().end()) mesh["type"].fail("unknown mesh type '" + type + "' (known: line, arc)");
+    const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
+    const Meridian points = gen->second.make(mp);
+    const int first = m.num_nodes();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (points[i](0) < 0) mesh.fail(fmt::format("node {} has a negative radius r = {:g}", i, points[i](0)));
+      m.X.push_back(points[i]);
+      part.nodes.push_back(first + static_cast<int>(i));
+    }
+    for (std::size_t e = 0; e + 1 < points.size(); ++e) {
+      const double L = (points[e + 1] - points[e]).norm();
+      if (!(L > 0)) mesh.fail(fmt::format("element {} has zero length", e));
+      if (points[e](0) == 0 && points[e + 1](0) == 0) mesh.fail(fmt::format("element {} lies on the axis (r = 0)", e));
+      part.elements.push_back({first + static_cast<int>(e), first + static_cast<int>(e) + 1});
+    }
+    m.node_sets.push_back({name + ".start", {part.nodes.front()}});
+    m.node_sets.push_back({name + ".end", {part.nodes.back()}});
+    m.node_sets.push_back({name + ".all", part.nodes});
+    m.parts.push_back(std::move(part));
+  }
+}
+
+void read_node_sets(const DeckNode& deck, Model& m) {
+  if (!deck.has("node_sets")) return;
+  for (const auto& [name, node] : deck["node_sets"].entries()) {
+    if (m.find_node_set(name) >= 0) node.fail("node set '" + name + "' is already defined");
+    const Params p = read_params(node, scalar_part(node_set_spec(), {"nodes"}), m.units, names({"nodes"}));
+    const int part = m.find_part(p.text("part"));
+    if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
+    const auto& pn = m.parts[part].nodes;
+    NodeSet set{name, {}};
+    const DeckNode nodes = node.required("nodes");
+    if (nodes.is_scalar()) {
+      const std::string w = nodes.as_string();
+      if (w == "start") set.nodes = {pn.front()};
+      else if (w == "end") set.nodes = {pn.back()};
+      else if (w == "all") set.nodes = pn;
+      else nodes.fail("expected start, end, all or a list of node indices, got '" + w + "'");
+    } else {
+      for (const auto& item : nodes.items()) {
+        const long i = item.as_integer();
+        if (i < 0 || i >= static_cast<long>(pn.size()))
+          item.fail(fmt::format("node index {} is outside the part (0 … {})", i, pn.size() - 1));
+        set.nodes.push_back(pn[i]);
+      }
+    }
+    m.node_sets.push_back(std::move(set));
+  }
+}
+
+int node_set_ref(const Params& p, const std::string& key, const Model& m) {
+  const int s = m.find_node_set(p.text(key));
+  if (s < 0) p.fail(key, "undefined node set '" + p.text(key) + "'");
+  return s;
+}
+
+void read_boundaries(const DeckNode& deck, Model& m) {
+  if (!deck.has("boundary")) return;
+  for (const auto& [name, node] : deck["boundary"].entries()) {
+    const Params p = read_params(node, scalar_part(boundary_spec(), {"dofs"}), m.units, names({"dofs"}));
+    Boundary b{name, node_set_ref(p, "node_set", m), {}, node.where()};
+    const DeckNode dofs = node.required("dofs");
+    const std::vector<DeckNode> list = dofs.is_sequence() ? dofs.items() : std::vector<DeckNode>{dofs};
+    for (const auto& d : list) {
+      const std::string s = d.as_string();
+      if (s == "r") b.dofs.push_back(0);
+      else if (s == "z") b.dofs.push_back(1);
+      else d.fail("unknown DOF '" + s + "' (axisymmetric DOFs are r and z)");
+    }
+    m.boundaries.push_back(std::move(b));
+  }
+  // A DOF may be prescribed by one boundary only.
+  std::map<int, std::string> owner;
+  for (const auto& b : m.boundaries)
+    for (int n : m.node_sets[b.node_set].nodes)
+      for (int d : b.dofs) {
+        auto [it, fresh] = owner.emplace(kDofsPerNode * n + d, b.name);
+        if (!fresh && it->second != b.name)
+          throw InputError(b.where, fmt::format("boundary '{}' prescribes a DOF that boundary '{}' already prescribes",
+                                                b.name, it->second));
+      }
+}
+
+void read_loads(const DeckNode& deck, Model& m) {
+  if (!deck.has("loads")) return;
+  for (const auto& [name, node] : deck["loads"].entries()) {
+    for (const auto& b : m.boundaries)
+      if (b.name == name) node.fail("name '" + name + "' is already used by a boundary");
+    const Params p = read_params(node, load_spec(), m.units);
+    const int part = m.find_part(p.text("part"));
+    if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
+    m.loads.push_back({name, part, p.boolean("flip") ? -1.0 : 1.0, node.where()});
+  }
+}
+
+void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
+  const DeckNode steps = deck.required("steps");
+  if (!steps.is_sequence() || steps.items().empty()) steps.fail("expected a list of steps");
+  for (const auto& node : steps.items()) {
+    const Params p = read_params(node, scalar_part(step_spec(), {"set", "solver"}), m.units, names({"set", "solver"}));
+    Step s;
+    s.name = p.text("name");
+    s.increments = static_cast<int>(p.integer("increments"));
+    s.solver = read_solver(node["solver"], m.units, solver);
+    if (node.has("set")) {
+      for (const auto& [target, value] : node["set"].entries()) {
+        const bool is_boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == target; });
+        const bool is_load = std::any_of(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == target; });
+        if (!is_boundary && !is_load) value.fail("'" + target + "' is neither a boundary nor a load");
+        s.targets[target] = read_quantity(value, is_boundary ? Dimension::length : Dimension::pressure, m.units);
+      }
+    }
+    m.steps.push_back(std::move(s));
+  }
+}
+
+void read_output(const DeckNode& deck, Model& m) {
+  if (!deck.has("output")) return;
+  const DeckNode out = deck["output"];
+  const Params p = read_params(out, scalar_part(output_spec(), {"history"}), m.units, names({"history"}));
+  m.output.vtk = p.boolean("vtk");
+  m.output.vtk_segments = static_cast<int>(p.integer("vtk_segments"));
+  if (!out.has("history")) return;
+  std::set<std::string> columns;
+  for (const auto& node : out["history"].items()) {
+    const Params h = read_params(node, history_spec(), m.units);
+    HistoryRequest r;
+    r.quantity = h.text("quantity");
+    const auto& qs = history_quantities();
+    auto q = std::find_if(qs.begin(), qs.end(), [&](const HistoryQuantity& x) { return x.name == r.quantity; });
+    if (q == qs.end()) {
+      std::string list;
+      for (const auto& x : qs) list += (list.empty() ? "" : ", ") + x.name;
+      h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")");
+    }
+    r.dim = q->dim;
+    for (const char* key : {"part", "node_set", "load"}) {
+      if (h.has(key) && q->target != key)
+        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, q->target.empty() ? "no set" : "a " + q->target));
+    }
+    if (!q->target.empty() && !h.has(q->target))
+      h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, q->target));
+    if (q->target == "part") {
+      r.part = m.find_part(h.text("part"));
+      if (r.part < 0) h.fail("part", "undefined part '" + h.text("part") + "'");
+    } else if (q->target == "node_set") {
+      r.node_set = node_set_ref(h, "node_set", m);
+    } else if (q->target == "load") {
+      const std::string& l = h.text("load");
+      auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& x) { return x.name == l; });
+      if (it == m.loads.end()) h.fail("load", "undefined load '" + l + "'");
+      r.load = static_cast<int>(it - m.loads.begin());
+    }
+    const bool reaction = r.quantity.rfind("reaction_", 0) == 0;
+    r.reduce = reaction ? Reduce::sum : Reduce::mean;
+    if (h.has("reduce")) {
+      const std::string& s = h.text("reduce");
+      r.reduce = s == "min" ? Reduce::min : s == "max" ? Reduce::max : s == "sum" ? Reduce::sum : Reduce::mean;
+    }
+    std::string suffix;
+    if (r.dim != Dimension::dimensionless) {
+      r.unit = h.has("unit") ? h.text("unit") : m.units.internal_unit(r.dim);
+      try {
+        m.units.check_unit(r.unit, r.dim);
+      } catch (const std::invalid_argument& e) {
+        h.fail("unit", e.what());
+      }
+      suffix = unit_suffix(m.units, r.dim, h.has("unit") ? r.unit : "");
+    } else if (h.has("unit")) {
+      h.fail("unit", "quantity '" + r.quantity + "' is dimensionless");
+    }
+    r.column = (h.has("name") ? h.text("name") : r.quantity) + suffix;
+    if (!columns.insert(r.column).second) node.fail("duplicate history column '" + r.column + "'");
+    m.output.history.push_back(r);
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, 0, ""}, std::string("cannot read the file: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError({path, 0, 0, ""}, "error while reading the file");
+  return ss.str();
+}
+
+}  // namespace
+
+const std::vector<HistoryQuantity>& history_quantities() {
+  static const std::vector<HistoryQuantity> q = {
+      {"time", "", Dimension::dimensionless, "analysis time: step number − 1 + fraction of the step done"},
+      {"pressure", "load", Dimension::pressure, "current magnitude of a pressure load"},
+      {"lambda_1", "part", Dimension::dimensionless, "stretch in direction 1 (hoop), λθ = r/R"},
+      {"lambda_2", "part", Dimension::dimensionless, "stretch in direction 2 (meridian), λs = ℓ/L"},
+      {"lambda_3", "part", Dimension::dimensionless, "thickness stretch λ3 = 1/(λ1 λ2)"},
+      {"E_1", "part", Dimension::dimensionless, "Green–Lagrange strain E1 = ½(λ1² − 1)"},
+      {"E_2", "part", Dimension::dimensionless, "Green–Lagrange strain E2 = ½(λ2² − 1)"},
+      {"S_1", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S1"},
+      {"S_2", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S2"},
+      {"sigma_1", "part", Dimension::pressure, "Cauchy stress σ1 = λ1² S1"},
+      {"sigma_2", "part", Dimension::pressure, "Cauchy stress σ2 = λ2² S2"},
+      {"thickness", "part", Dimension::length, "current thickness h = λ3 H"},
+      {"radius", "part", Dimension::length, "current mid-surface radius r"},
+      {"position_r", "node_set", Dimension::length, "current r of the nodes"},
+      {"position_z", "node_set", Dimension::length, "current z of the nodes"},
+      {"displacement_r", "node_set", Dimension::length, "displacement u_r of the nodes"},
+      {"displacement_z", "node_set", Dimension::length, "displacement u_z of the nodes"},
+      {"reaction_r", "node_set", Dimension::force, "reaction force on prescribed r DOFs (whole circumference)"},
+      {"reaction_z", "node_set", Dimension::force, "reaction force on prescribed z DOFs (whole circumference)"},
+  };
+  return q;
+}
+
+std::vector<ComponentSpec> deck_sections() {
+  return {units_spec(), part_spec(), node_set_spec(), boundary_spec(), load_spec(),
+          solver_spec(), step_spec(), output_spec(), history_spec()};
+}
+
+Model read_deck_text(const std::string& text, const std::string& file) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError({file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, ""},
+                     "YAML syntax error: " + e.msg);
+  }
+  const DeckNode deck(root, file, "", {file, 1, 1, ""});
+  if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");
+  deck.expect_map_with_keys(kTopKeys);
+
+  Model m;
+  m.deck_file = file;
+  if (deck.has("title")) m.title = deck["title"].as_string();
+  {
+    const Params u = read_params(deck.required("units"), units_spec(), m.units);
+    try {
+      m.units = UnitSystem(u.text("length"), "N");
+    } catch (const std::invalid_argument& e) {
+      u.fail("length", e.what());
+    }
+    try {
+      m.units = UnitSystem(u.text("length"), u.text("force"));
+    } catch (const std::invalid_argument& e) {
+      u.fail("force", e.what());
+    }
+  }
+  const DeckNode mats = deck.required("materials");
+  if (!mats.is_map() || mats.entries().empty()) mats.fail("expected a map of materials (name: {type: ..., ...})");
+  for (const auto& [name, node] : mats.entries()) {
+    if (!node.is_map()) node.fail("expected a map with `type` and the model's constants");
+    const std::string type = node.required("type").as_string();
+    auto t = material_types().find(type);
+    if (t == material_types().end()) {
+      std::string list;
+      for (const auto& [k, v] : material_types()) list += (list.empty() ? "" : ", ") + k;
+      node["type"].fail("unknown material type '" + type + "' (known: " + list + ")");
+    }
+    const Params p = read_params(node, t->second.spec, m.units, names({"type"}));
+    m.materials[name] = t->second.make(p);
+  }
+  read_parts(deck, m);
+  read_node_sets(deck, m);
+  read_boundaries(deck, m);
+  read_loads(deck, m);
+  const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
+  read_steps(deck, m, solver);
+  read_output(deck, m);
+  return m;
+}
+
+Model read_deck(const std::string& path) { return read_deck_text(read_file(path), path); }
+
+}  // namespace tunica

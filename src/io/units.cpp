@@ -1,0 +1,121 @@
+#include "io/units.hpp"
+
+#include <udunits2.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+namespace tunica {
+
+namespace {
+
+/// The UDUNITS-2 unit database, read once per process.
+ut_system* unit_database() {
+  static ut_system* sys = [] {
+    ut_set_error_message_handler(ut_ignore);
+    ut_system* s = ut_read_xml(nullptr);
+    if (!s) throw std::runtime_error("cannot read the UDUNITS-2 unit database (package libudunits2-data)");
+    return s;
+  }();
+  return sys;
+}
+
+struct UnitDeleter {
+  void operator()(ut_unit* u) const { ut_free(u); }
+};
+using UnitPtr = std::unique_ptr<ut_unit, UnitDeleter>;
+
+UnitPtr parse_unit(const std::string& text) {
+  static std::mutex m;
+  std::lock_guard<std::mutex> lock(m);
+  UnitPtr u(ut_parse(unit_database(), text.c_str(), UT_UTF8));
+  if (!u) throw std::invalid_argument("unknown unit '" + text + "'");
+  return u;
+}
+
+double convert(double value, const std::string& from, const std::string& to, const char* what) {
+  UnitPtr a = parse_unit(from), b = parse_unit(to);
+  cv_converter* cv = ut_get_converter(a.get(), b.get());
+  if (!cv) throw std::invalid_argument("unit '" + from + "' is not a " + what);
+  double r = cv_convert_double(cv, value);
+  cv_free(cv);
+  return r;
+}
+
+}  // namespace
+
+const char* dimension_name(Dimension d) {
+  switch (d) {
+    case Dimension::dimensionless: return "dimensionless number";
+    case Dimension::length: return "length";
+    case Dimension::force: return "force";
+    case Dimension::pressure: return "pressure (stress)";
+    case Dimension::angle: return "angle";
+  }
+  return "?";
+}
+
+UnitSystem::UnitSystem(const std::string& length, const std::string& force) : length_(length), force_(force) {
+  check_unit(length_, Dimension::length);
+  check_unit(force_, Dimension::force);
+}
+
+std::string UnitSystem::internal_unit(Dimension d) const {
+  switch (d) {
+    case Dimension::dimensionless: return "1";
+    case Dimension::length: return length_;
+    case Dimension::force: return force_;
+    case Dimension::pressure: return "(" + force_ + ")/(" + length_ + ")^2";
+    case Dimension::angle: return "rad";
+  }
+  return "1";
+}
+
+void UnitSystem::check_unit(const std::string& unit, Dimension d) const {
+  const char* reference = d == Dimension::length ? "m"
+                          : d == Dimension::force ? "N"
+                          : d == Dimension::pressure ? "Pa"
+                          : d == Dimension::angle ? "rad"
+                                                  : "1";
+  convert(1.0, unit, reference, dimension_name(d));
+}
+
+double UnitSystem::to_internal(double value, const std::string& unit, Dimension d) const {
+  if (unit.empty()) return value;
+  return convert(value, unit, internal_unit(d), dimension_name(d));
+}
+
+double UnitSystem::from_internal(double value, const std::string& unit, Dimension d) const {
+  if (unit.empty()) return value;
+  return convert(value, internal_unit(d), unit, dimension_name(d));
+}
+
+std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string& unit) {
+  if (d == Dimension::dimensionless) return "";
+  std::string u = unit;
+  if (u.empty())
+    u = d == Dimension::pressure ? units.force_unit() + "_per_" + units.length_unit() + "2" : units.internal_unit(d);
+  for (char& c : u)
+    if (c == '/' || c == ' ' || c == '^' || c == '(' || c == ')' || c == '*' || c == '.') c = '_';
+  return "_" + u;
+}
+
+bool split_quantity(const std::string& text, double& value, std::string& unit) {
+  const char* begin = text.c_str();
+  while (*begin == ' ' || *begin == '\t') ++begin;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(begin, &end);
+  if (end == begin || errno == ERANGE || !std::isfinite(value)) return false;
+  std::string rest(end);
+  auto first = rest.find_first_not_of(" \t");
+  auto last = rest.find_last_not_of(" \t");
+  unit = first == std::string::npos ? std::string() : rest.substr(first, last - first + 1);
+  return true;
+}
+
+}  // namespace tunica

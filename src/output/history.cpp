@@ -1,0 +1,83 @@
+#include "output/history.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace tunica {
+
+namespace {
+
+double reduce(const std::vector<double>& v, Reduce how) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  switch (how) {
+    case Reduce::min: return *std::min_element(v.begin(), v.end());
+    case Reduce::max: return *std::max_element(v.begin(), v.end());
+    case Reduce::sum: {
+      double s = 0;
+      for (double x : v) s += x;
+      return s;
+    }
+    case Reduce::mean: break;
+  }
+  double s = 0;
+  for (double x : v) s += x;
+  return s / static_cast<double>(v.size());
+}
+
+double point_value(const MembranePoint& p, const std::string& q) {
+  if (q == "lambda_1") return p.lambda(0);
+  if (q == "lambda_2") return p.lambda(1);
+  if (q == "lambda_3") return p.lambda(2);
+  if (q == "E_1") return p.E(0);
+  if (q == "E_2") return p.E(1);
+  if (q == "S_1") return p.S(0);
+  if (q == "S_2") return p.S(1);
+  if (q == "sigma_1") return p.sigma(0);
+  if (q == "sigma_2") return p.sigma(1);
+  if (q == "thickness") return p.thickness;
+  if (q == "radius") return p.r;
+  throw std::logic_error("unknown element quantity " + q);
+}
+
+double node_value(const Analysis& a, int node, const std::string& q) {
+  const Model& m = a.model();
+  const int d = kDofsPerNode * node;
+  const Eigen::VectorXd& u = a.displacement();
+  if (q == "position_r") return m.X[node](0) + u(d);
+  if (q == "position_z") return m.X[node](1) + u(d + 1);
+  if (q == "displacement_r") return u(d);
+  if (q == "displacement_z") return u(d + 1);
+  if (q == "reaction_r") return a.reactions()(d);
+  if (q == "reaction_z") return a.reactions()(d + 1);
+  throw std::logic_error("unknown node quantity " + q);
+}
+
+}  // namespace
+
+std::vector<double> history_values(const Analysis& a, const IncrementInfo& info) {
+  const Model& m = a.model();
+  std::vector<double> out;
+  std::vector<std::vector<MembranePoint>> points(m.parts.size());
+  for (const auto& r : m.output.history) {
+    double v = 0;
+    if (r.quantity == "time") {
+      v = info.time;
+    } else if (r.load >= 0) {
+      v = a.loads().pressure[r.load];
+    } else if (r.part >= 0) {
+      if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part);
+      std::vector<double> vals;
+      for (const auto& p : points[r.part]) vals.push_back(point_value(p, r.quantity));
+      v = reduce(vals, r.reduce);
+    } else {
+      std::vector<double> vals;
+      for (int n : m.node_sets[r.node_set].nodes) vals.push_back(node_value(a, n, r.quantity));
+      v = reduce(vals, r.reduce);
+    }
+    out.push_back(m.units.from_internal(v, r.unit, r.dim));
+  }
+  return out;
+}
+
+}  // namespace tunica

@@ -1,0 +1,29 @@
+#pragma once
+// ParaView output of axisymmetric models: the meridian as line cells in the
+// (x = r, z) plane, and the membrane revolved about the z axis as a 3-D
+// surface of quadrilaterals. One .vtu per increment and a .pvd series of each.
+#include <string>
+#include <vector>
+
+#include "solver/analysis.hpp"
+
+namespace tunica {
+
+/// The meridian (lines) at the current state as VTK XML UnstructuredGrid text.
+std::string meridian_vtu(const Analysis& analysis);
+/// The revolved surface (quads, `segments` around the axis) as VTK XML text.
+std::string surface_vtu(const Analysis& analysis, int segments);
+
+/// A ParaView .pvd collection that lists one dataset per time value.
+class PvdSeries {
+public:
+  PvdSeries(std::string path) : path_(std::move(path)) {}
+  /// Adds a dataset (path relative to the .pvd) and rewrites the .pvd atomically.
+  void add(double time, const std::string& relative_file);
+
+private:
+  std::string path_;
+  std::vector<std::pair<double, std::string>> entries_;
+};
+
+}  // namespace tunica

@@ -1,0 +1,36 @@
+#pragma once
+// Newton–Raphson for one load increment: R(u) = 0 on the free DOFs with the
+// consistent tangent K = ∂R/∂u. Newton sees the residual and the Jacobian only.
+#include <functional>
+
+#include "assembly/system.hpp"
+#include "model/model.hpp"
+#include "solver/linear_solver.hpp"
+
+namespace tunica {
+
+/// One Newton iteration, for newton.csv and the progress line.
+struct IterationRecord {
+  int iteration = 0;             ///< 0 = residual before the first correction
+  double residual = 0;           ///< ‖R_free‖ (force units)
+  double relative_residual = 1;  ///< ‖R‖ / ‖R₀‖
+  double energy = 0;             ///< |Δu_k · R_{k−1}|
+  double relative_energy = 1;    ///< energy / energy of the first correction
+  double assembly_seconds = 0;
+  double solve_seconds = 0;
+};
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;
+  std::string failure;  ///< why it did not converge
+  double last_relative_residual = 0;
+};
+
+/// Iterates on u (prescribed DOFs already set) until the convergence tests of
+/// `settings` hold: ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
+/// round-off (≤ 1e-13 of the force scale). On failure u is left as it was last.
+NewtonResult newton(const System& system, LinearSolver& solver, const LoadState& loads, Eigen::VectorXd& u,
+                    const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration);
+
+}  // namespace tunica
