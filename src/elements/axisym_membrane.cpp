@@ -57,6 +57,8 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
       p.S = m.S.head<2>();
       p.sigma = Eigen::Vector2d(p.lambda(0) * p.lambda(0) * m.S(0), p.lambda(1) * p.lambda(1) * m.S(1));
       p.thickness = p.lambda(2) * H;
+      p.W = m.W;
+      p.weight = w;
     }
   }
 }

@@ -23,6 +23,8 @@ struct MembranePoint {
   Eigen::Vector2d S;               ///< 2nd Piola–Kirchhoff stresses (S1, S2)
   Eigen::Vector2d sigma;           ///< Cauchy stresses σ_α = λ_α² S_α
   double thickness = 0;            ///< current thickness h = λ3 H
+  double W = 0;                    ///< strain energy per reference volume Ŵ
+  double weight = 0;               ///< quadrature weight × reference volume element (Σ W·weight = stored energy)
 };
 
 /// Internal force f (4) and, if K is given, the tangent K = ∂f/∂u (4×4, material

@@ -19,6 +19,11 @@ ut_system* unit_database() {
     ut_set_error_message_handler(ut_ignore);
     ut_system* s = ut_read_xml(nullptr);
     if (!s) throw std::runtime_error("cannot read the UDUNITS-2 unit database (package libudunits2-data)");
+    // "deg" is the usual abbreviation of the arc degree, which UDUNITS-2 spells "degree" or "°".
+    if (ut_unit* degree = ut_parse(s, "degree", UT_ASCII)) {
+      ut_map_symbol_to_unit("deg", UT_ASCII, degree);
+      ut_free(degree);
+    }
     return s;
   }();
   return sys;
