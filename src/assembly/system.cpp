@@ -103,6 +103,7 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
       }
       for (int a = 0; a < 4; ++a) R(kDofsPerNode * e[a / 2] + a % 2) += f(a);
       if (K) {
+        scale2 += Ke.squaredNorm() * (model_.X[e[1]] - model_.X[e[0]]).squaredNorm();
         const auto& pos = scatter_[p][k];
         double* values = K->valuePtr();
         for (int ab = 0; ab < 16; ++ab)

@@ -34,8 +34,9 @@ public:
   /// Sets the prescribed DOFs of u to the boundary values of `loads`.
   void apply_boundary(const LoadState& loads, Eigen::VectorXd& u) const;
   /// Full residual R (num_dofs) and, if K is given, the free-DOF tangent with the fixed pattern.
-  /// `force_scale`, if given, receives sqrt(Σ_e ‖f_int,e‖² + ‖f_ext,e‖²), the size of the forces
-  /// that cancel in R (a yardstick for round-off).
+  /// `force_scale`, if given, receives a yardstick for round-off in R: sqrt(Σ_e ‖f_int,e‖² +
+  /// ‖f_ext,e‖² + (‖K_e‖ L_e)²), the forces that cancel in R and, when K is assembled, the
+  /// stiffness × element size that bounds round-off of stresses computed near zero strain.
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                 double* force_scale = nullptr) const;
   /// A zero matrix with the tangent's pattern.

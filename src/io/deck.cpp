@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -77,8 +78,8 @@ const ComponentSpec& solver_spec() {
                                     "convergence when ‖R‖ ≤ tol · ‖R₀‖ (R₀: residual at the start of the increment)")),
                     "1e-9"),
        with_default(positive(number("energy_tolerance", Dimension::dimensionless,
-                                    "and |Δu·R| ≤ tol · |Δu₁·R₀| (energy norm)")),
-                    "1e-18"),
+                                    "and |Δu_k·R_k| ≤ tol · |Δu₁·R₀| (energy norm of the last correction against the residual it left)")),
+                    "1e-15"),
        with_default(at_most(at_least(integer("max_cutbacks", "times an increment may be halved and retried"), 0), 30),
                     "5"),
        with_default(one_of(text("linear_solver", "sparse direct solver"), {"umfpack", "sparse_lu"}), "umfpack")}};
@@ -358,6 +359,8 @@ void read_output(const DeckNode& deck, Model& m) {
 }
 
 std::string read_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError({path, 0, 0, ""}, "cannot read the file: it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0, ""}, std::string("cannot read the file: ") + std::strerror(errno));
   std::ostringstream ss;

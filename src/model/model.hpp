@@ -53,7 +53,7 @@ struct PressureLoad {
 struct SolverSettings {
   int max_iterations = 12;
   double residual_tolerance = 1e-9;  ///< on ‖R‖/‖R₀‖
-  double energy_tolerance = 1e-18;   ///< on |Δu·R| relative to the first iteration
+  double energy_tolerance = 1e-15;   ///< on |Δu·R| relative to the first iteration
   int max_cutbacks = 5;
   std::string linear_solver = "umfpack";
 };

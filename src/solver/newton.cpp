@@ -16,13 +16,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 NewtonResult newton(const System& system, LinearSolver& solver, const LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration) {
-  constexpr double kRoundoff = 1e-13;  // ‖R‖ below this fraction of the cancelling forces is round-off
+  constexpr double kRoundoff = 1e-14;  // ‖R‖ below this fraction of the cancelling forces is round-off
   constexpr double kDivergence = 1e8;  // ‖R‖ above this multiple of ‖R₀‖ is divergence
   NewtonResult result;
   const int nf = system.num_free();
   Eigen::VectorXd R, Rf(nf);
   SparseMatrix K = system.pattern();
   double r0 = 0, e1 = 0, energy = 0;
+  Eigen::VectorXd du;
   for (int k = 0;; ++k) {
     IterationRecord rec;
     rec.iteration = k;
@@ -39,6 +40,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
       if (system.equation(i) >= 0) Rf(system.equation(i)) = R(i);
     rec.residual = Rf.norm();
     if (k == 0) r0 = rec.residual;
+    if (k > 0) energy = std::abs(du.dot(Rf));  // energy norm of the last correction against the new residual
     rec.relative_residual = r0 > 0 ? rec.residual / r0 : 0.0;
     rec.energy = energy;
     rec.relative_energy = e1 > 0 ? energy / e1 : 0.0;
@@ -74,11 +76,10 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
       result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
       return result;
     }
-    const Eigen::VectorXd du = solver.solve(-Rf);
+    du = solver.solve(-Rf);
     rec.solve_seconds = seconds_since(t1);
     on_iteration(rec);
-    energy = std::abs(du.dot(Rf));
-    if (k == 0) e1 = energy;
+    if (k == 0) e1 = std::abs(du.dot(Rf));  // reference: first correction against the initial residual
     for (int i = 0; i < system.num_dofs(); ++i)
       if (system.equation(i) >= 0) u(i) += du(system.equation(i));
   }

@@ -14,8 +14,8 @@ struct IterationRecord {
   int iteration = 0;             ///< 0 = residual before the first correction
   double residual = 0;           ///< ‖R_free‖ (force units)
   double relative_residual = 1;  ///< ‖R‖ / ‖R₀‖
-  double energy = 0;             ///< |Δu_k · R_{k−1}|
-  double relative_energy = 1;    ///< energy / energy of the first correction
+  double energy = 0;             ///< |Δu_k · R_k|: last correction against the residual it left
+  double relative_energy = 1;    ///< energy / |Δu_1 · R_0|
   double assembly_seconds = 0;
   double solve_seconds = 0;
 };
@@ -29,7 +29,7 @@ struct NewtonResult {
 
 /// Iterates on u (prescribed DOFs already set) until the convergence tests of
 /// `settings` hold: ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
-/// round-off (≤ 1e-13 of the force scale). On failure u is left as it was last.
+/// round-off (≤ 1e-14 of the force scale of System::assemble). On failure u is left as it was last.
 NewtonResult newton(const System& system, LinearSolver& solver, const LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration);
 

@@ -1,0 +1,203 @@
+// Bad input: every class of error in a deck gets a clear message naming the
+// file, the line and the key, a non-zero exit (2) and no crash. Each test runs
+// the real `tunica check` (or `tunica run`) on a broken copy of the example deck.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "../support/capture.hpp"
+
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
+
+struct Outcome {
+  int exit_code = -1;
+  std::string output;  // stdout + stderr
+};
+
+Outcome run_cli(const std::string& args) {
+  Outcome o;
+  const std::string cmd = std::string(TUNICA_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) o.output.append(buf, n);
+  const int status = pclose(p);
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return o;
+}
+
+std::string write_deck(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "tunica-bad-input";
+  fs::create_directories(dir);
+  const fs::path path = dir / (name + ".yaml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+/// 1-based line of the first occurrence of `needle` in `text`.
+int line_of(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+/// Replaces `from` by `to` in the example, checks the deck and expects exit 2 and a
+/// message "<file>:<line>:...key '<key>': ...<what>...".
+void expect_error(const std::string& name, const std::string& from, const std::string& to, const std::string& key,
+                  const std::string& what, const std::string& line_text = "") {
+  const std::string text = replace(read_text(kExample), from, to);
+  const std::string path = write_deck(name, text);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  const int line = line_of(text, line_text.empty() ? to : line_text);
+  EXPECT_NE(o.output.find(path + ":" + std::to_string(line) + ":"), std::string::npos)
+      << "expected line " << line << " in: " << o.output;
+  if (!key.empty()) {
+    EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
+  }
+  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
+}
+
+}  // namespace
+
+TEST(BadInput, TheExampleItselfIsValid) {
+  const Outcome o = run_cli("check " + kExample);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("valid deck"), std::string::npos);
+}
+
+TEST(BadInput, YamlSyntaxError) {
+  // yaml-cpp reports where it noticed the unclosed list: the next line.
+  expect_error("syntax", "a2: 0.60558", "a2: [0.60558", "", "YAML syntax error", "    a4: 0.1067");
+}
+
+TEST(BadInput, UnknownKey) {
+  expect_error("unknown-key", "    a4: 0.1067", "    a4: 0.1067\n    a9: 1.0", "materials.aorta.a9",
+               "unknown key 'a9' (allowed here: type, c, a1, a2, a3, a4, a5, a6, a7)", "a9: 1.0");
+}
+
+TEST(BadInput, UnknownTopLevelSection) {
+  expect_error("unknown-section", "loads:", "load:", "load", "unknown key 'load'");
+}
+
+TEST(BadInput, MissingKey) {
+  // The error points at the map that lacks the key.
+  expect_error("missing-key", "    a1: 0.68238\n", "", "materials.aorta.a1", "missing required key 'a1'",
+               "    type: fung");
+}
+
+TEST(BadInput, MissingSection) {
+  const std::string text = read_text(kExample);
+  const std::string cut = text.substr(0, text.find("steps:")) + text.substr(text.find("output:"));
+  const Outcome o = run_cli("check " + write_deck("missing-steps", cut));
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.output.find("key 'steps': missing required key 'steps'"), std::string::npos) << o.output;
+}
+
+TEST(BadInput, WrongTypeNumber) {
+  expect_error("wrong-type", "a2: 0.60558", "a2: stiff", "materials.aorta.a2", "expected a number, got 'stiff'");
+}
+
+TEST(BadInput, WrongTypeListForScalar) {
+  expect_error("wrong-type-list", "thickness: 0.122 mm", "thickness: [0.122 mm]", "parts.wall.thickness",
+               "expected a single value");
+}
+
+TEST(BadInput, WrongTypeInteger) {
+  expect_error("wrong-type-int", "increments: 20", "increments: 2.5", "steps[1].increments",
+               "expected an integer, got '2.5'");
+}
+
+TEST(BadInput, ZeroThickness) {
+  expect_error("zero-thickness", "thickness: 0.122 mm", "thickness: 0 mm", "parts.wall.thickness",
+               "value 0 is out of range (must be > 0)");
+}
+
+TEST(BadInput, NegativeThickness) {
+  expect_error("negative-thickness", "thickness: 0.122 mm", "thickness: -0.122 mm", "parts.wall.thickness",
+               "value -0.122 is out of range (must be > 0)");
+}
+
+TEST(BadInput, FungQuadraticFormNotPositiveDefinite) {
+  expect_error("fung-not-convex", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a1", "Fung quadratic form is not positive definite",
+               "    a1: 0.68238");
+}
+
+TEST(BadInput, NegativeFungConstant) {
+  expect_error("fung-negative-c", "c: 61.163 kPa", "c: -61.163 kPa", "materials.aorta.c", "out of range (must be > 0)");
+}
+
+TEST(BadInput, UndefinedMaterial) {
+  expect_error("undefined-material", "material: aorta", "material: aorta2", "parts.wall.material",
+               "undefined material 'aorta2'");
+}
+
+TEST(BadInput, UndefinedNodeSet) {
+  expect_error("undefined-set", "node_set: wall.start", "node_set: wall.begin", "boundary.base.node_set",
+               "undefined node set 'wall.begin'");
+}
+
+TEST(BadInput, UndefinedLoadInHistory) {
+  expect_error("undefined-load", "load: lumen", "load: lumen2", "output.history[0].load", "undefined load 'lumen2'");
+}
+
+TEST(BadInput, StepSetsSomethingUndefined) {
+  expect_error("undefined-target", "set: {lumen: 200 mmHg}", "set: {lumenn: 200 mmHg}", "steps[1].set.lumenn",
+               "'lumenn' is neither a boundary nor a load");
+}
+
+TEST(BadInput, UnknownUnit) {
+  expect_error("unknown-unit", "c: 61.163 kPa", "c: 61.163 kPaa", "materials.aorta.c", "unknown unit 'kPaa'");
+}
+
+TEST(BadInput, UnitOfTheWrongDimension) {
+  expect_error("wrong-dimension", "thickness: 0.122 mm", "thickness: 0.122 kPa", "parts.wall.thickness",
+               "unit 'kPa' is not a length");
+}
+
+TEST(BadInput, UnknownUnitSystem) {
+  expect_error("unknown-system", "units: {length: mm, force: N}", "units: {length: mm, force: Nw}", "units.force",
+               "unknown unit 'Nw'");
+}
+
+TEST(BadInput, UnknownMaterialType) {
+  expect_error("unknown-material-type", "type: fung ", "type: fungus ", "materials.aorta.type",
+               "unknown material type 'fungus' (known: fung, mooney_rivlin, neo_hookean)");
+}
+
+TEST(BadInput, UnreadableFile) {
+  const Outcome o = run_cli("check /nonexistent/deck.yaml");
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.output.find("/nonexistent/deck.yaml: cannot read the file: No such file or directory"), std::string::npos)
+      << o.output;
+  const fs::path dir = fs::temp_directory_path() / "tunica-bad-input" / "a-directory.yaml";
+  fs::create_directories(dir);
+  const Outcome d = run_cli("check " + dir.string());
+  EXPECT_EQ(d.exit_code, 2) << d.output;
+  EXPECT_NE(d.output.find(dir.string() + ": cannot read the file"), std::string::npos) << d.output;
+}
+
+TEST(BadInput, RunWithABadDeckWritesNothingAndKeepsEarlierResults) {
+  const fs::path out = fs::temp_directory_path() / "tunica-bad-input" / "kept";
+  fs::create_directories(out);
+  std::ofstream(out / "history.csv") << "earlier results\n";
+  const std::string path = write_deck("run-bad", replace(read_text(kExample), "a2: 0.60558", "a2: x"));
+  const Outcome o = run_cli("run " + path + " -o " + out.string());
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_EQ(read_text((out / "history.csv").string()), "earlier results\n");
+}
+
+TEST(BadInput, DeckThatIsNotAMap) {
+  const Outcome o = run_cli("check " + write_deck("not-a-map", "- just\n- a list\n"));
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.output.find(":1:1: a deck is a YAML map"), std::string::npos) << o.output;
+}
