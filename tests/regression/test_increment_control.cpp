@@ -1,0 +1,73 @@
+// Increment control: an increment too large for Newton is cut back and the
+// step still reaches the same state; a load beyond what the structure can
+// carry (a balloon above its pressure maximum, under pressure control) stops
+// the run cleanly with exit code 3, a message naming step, increment and
+// residual, and every converged increment kept in complete files.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+
+#include "../support/capture.hpp"
+
+using namespace tunica;
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+TEST(IncrementControl, CutBacksRecoverAndReachTheSameState) {
+  const std::string path = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
+  const std::string text = read_text(path);
+  const Model coarse = read_deck_text(replace(text, "increments: 20", "increments: 1\n    solver: {max_iterations: 5}"), path);
+  const Model fine = read_deck_text(text, path);
+  Capture c1, c2;
+  Analysis a1(coarse), a2(fine);
+  a1.run(c1);
+  a2.run(c2);
+  EXPECT_GT(c1.cutbacks, 0);
+  EXPECT_EQ(c1.rows.back().info.fraction, 1.0);
+  for (std::size_t k = 0; k < c1.rows.back().values.size(); ++k)
+    EXPECT_NEAR(c1.rows.back().values[k], c2.rows.back().values[k], 1e-9 * std::max(1.0, std::abs(c2.rows.back().values[k])))
+        << coarse.output.history[k].column;
+}
+
+TEST(IncrementControl, ALoadBeyondTheMaximumStopsCleanlyAndKeepsConvergedIncrements) {
+  const std::string src = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml";
+  const fs::path dir = fs::temp_directory_path() / "tunica-increment-control";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string deck = (dir / "over.yaml").string();
+  // p_max = 2μ(H/R)(7^(−1/6) − 7^(−7/6)) ≈ 0.012395 MPa; ask for 0.0135 MPa.
+  std::ofstream(deck) << replace(replace(read_text(src), "{inflation: 0.0118 MPa}", "{inflation: 0.0135 MPa}"), "increments: 20",
+                                 "increments: 10\n    solver: {max_cutbacks: 3}");
+  const std::string cmd = std::string(TUNICA_BINARY) + " run " + deck + " -q -o " + (dir / "out").string() + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int status = pclose(p);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 3) << out;
+  EXPECT_NE(out.find("the run stopped: step 1 'inflate', increment"), std::string::npos) << out;
+  EXPECT_NE(out.find("no convergence after 3 cut-back(s)"), std::string::npos) << out;
+  EXPECT_NE(out.find("relative residual"), std::string::npos) << out;
+  // history.csv: complete rows only, pressures rising and below the maximum.
+  std::istringstream h(read_text((dir / "out" / "history.csv").string()));
+  std::string line;
+  std::getline(h, line);
+  const auto fields = std::count(line.begin(), line.end(), ',');
+  int rows = 0;
+  double last_p = -1;
+  const double p_max = 2 * 1.0 * 0.01 * (std::pow(7.0, -1.0 / 6) - std::pow(7.0, -7.0 / 6)) * 1e3;  // kPa
+  while (std::getline(h, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), fields) << line;
+    const double pk = std::stod(line.substr(line.find(',', line.find(',', line.find(',') + 1) + 1) + 1));
+    EXPECT_GT(pk, last_p);
+    EXPECT_LT(pk, p_max * (1 + 2e-4));  // the discrete model's maximum is within its mesh error (7e-5)
+    last_p = pk;
+    ++rows;
+  }
+  EXPECT_GT(rows, 9);
+  EXPECT_GT(last_p, 0.99 * p_max);  // it got close to the maximum before stopping
+  EXPECT_TRUE(fs::exists(dir / "out" / "surface.pvd"));
+  for (const auto& f : fs::directory_iterator(dir / "out")) EXPECT_NE(f.path().extension(), ".tmp");
+}
