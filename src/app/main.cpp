@@ -55,7 +55,13 @@ int main(int argc, char** argv) {
   auto* check_cmd = app.add_subcommand("check", "validate a deck without solving");
   check_cmd->add_option("deck", deck, "YAML deck")->required();
   auto* ref_cmd = app.add_subcommand("reference", "print the deck reference (Markdown), generated from the declarations");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; a malformed command line is an input error (exit 2).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kInputErrorExit;
+  }
   try {
     if (*run_cmd) return run(deck, out, quiet);
     if (*check_cmd) return check(deck);

@@ -34,7 +34,7 @@ const ComponentSpec& part_spec() {
       {required(one_of(text("element", "element type"), {"axisymmetric_membrane"})),
        required(text("material", "name of a material in `materials`")),
        required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
-       text("mesh", "a map with `type: line` or `type: arc` and that generator's keys (see Meshes)")}};
+       required(structured("mesh", "map", "`type: line` or `type: arc` and that generator's keys (see Meshes)"))}};
   return s;
 }
 
@@ -43,7 +43,7 @@ const ComponentSpec& node_set_spec() {
       "node_sets", "",
       "A named set of nodes: the `nodes` of a `part` (`start`, `end`, `all`, or a list of indices along "
       "its meridian, 0 = start).",
-      {required(text("part", "name of a part")), text("nodes", "`start`, `end`, `all` or a list of indices")}};
+      {required(text("part", "name of a part")), required(structured("nodes", "text or list", "`start`, `end`, `all` or a list of node indices"))}};
   return s;
 }
 
@@ -53,7 +53,7 @@ const ComponentSpec& boundary_spec() {
       "A prescribed displacement of some DOFs of a node set: 0 until a step sets it, then ramped "
       "linearly within the step to the value the step's `set` gives, and held after.",
       {required(text("node_set", "name of a node set")),
-       text("dofs", "list of DOFs among `r` and `z`")}};
+       required(structured("dofs", "list", "DOFs among `r` and `z`, e.g. `[z]`"))}};
   return s;
 }
 
@@ -92,8 +92,8 @@ const ComponentSpec& step_spec() {
       "One load step: the targets it ramps to, in equal increments.",
       {with_default(text("name", "name shown in progress and output"), "step"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
-       text("set", "map from boundary or load names to their values at the end of the step"),
-       text("solver", "overrides of the top-level `solver` keys for this step")}};
+       structured("set", "map", "boundary or load names → their values at the end of the step"),
+       structured("solver", "map", "overrides of the top-level `solver` keys for this step")}};
   return s;
 }
 
@@ -114,7 +114,7 @@ const ComponentSpec& history_spec() {
 const ComponentSpec& output_spec() {
   static const ComponentSpec s{
       "output", "", "What a run writes besides newton.csv.",
-      {text("history", "list of history columns (see output.history)"),
+      {structured("history", "list", "history columns (see `output.history`)"),
        with_default(boolean("vtk", "write ParaView files (.vtu per increment, .pvd series)"), "true"),
        with_default(at_most(at_least(integer("vtk_segments", "hoop subdivisions of the revolved surface"), 3), 1000),
                     "48")}};
@@ -148,25 +148,13 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
   return base;
 }
 
-/// The spec without the parameters that are structured (lists, maps) and read by hand.
-ComponentSpec scalar_part(const ComponentSpec& s, std::initializer_list<const char*> structured) {
-  ComponentSpec out = s;
-  out.params.erase(std::remove_if(out.params.begin(), out.params.end(),
-                                  [&](const ParamSpec& p) {
-                                    return std::find_if(structured.begin(), structured.end(),
-                                                        [&](const char* k) { return p.name == k; }) != structured.end();
-                                  }),
-                   out.params.end());
-  return out;
-}
-
 std::vector<std::string> names(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
 
 void read_parts(const DeckNode& deck, Model& m) {
   const DeckNode parts = deck.required("parts");
   if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
   for (const auto& [name, node] : parts.entries()) {
-    const Params p = read_params(node, scalar_part(part_spec(), {"mesh"}), m.units, names({"mesh"}));
+    const Params p = read_params(node, part_spec(), m.units);
     Part part;
     part.name = name;
     part.element = p.text("element");
@@ -207,7 +195,7 @@ void read_node_sets(const DeckNode& deck, Model& m) {
   if (!deck.has("node_sets")) return;
   for (const auto& [name, node] : deck["node_sets"].entries()) {
     if (m.find_node_set(name) >= 0) node.fail("node set '" + name + "' is already defined");
-    const Params p = read_params(node, scalar_part(node_set_spec(), {"nodes"}), m.units, names({"nodes"}));
+    const Params p = read_params(node, node_set_spec(), m.units);
     const int part = m.find_part(p.text("part"));
     if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
     const auto& pn = m.parts[part].nodes;
@@ -240,7 +228,7 @@ int node_set_ref(const Params& p, const std::string& key, const Model& m) {
 void read_boundaries(const DeckNode& deck, Model& m) {
   if (!deck.has("boundary")) return;
   for (const auto& [name, node] : deck["boundary"].entries()) {
-    const Params p = read_params(node, scalar_part(boundary_spec(), {"dofs"}), m.units, names({"dofs"}));
+    const Params p = read_params(node, boundary_spec(), m.units);
     Boundary b{name, node_set_ref(p, "node_set", m), {}, node.where()};
     const DeckNode dofs = node.required("dofs");
     const std::vector<DeckNode> list = dofs.is_sequence() ? dofs.items() : std::vector<DeckNode>{dofs};
@@ -280,7 +268,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
   const DeckNode steps = deck.required("steps");
   if (!steps.is_sequence() || steps.items().empty()) steps.fail("expected a list of steps");
   for (const auto& node : steps.items()) {
-    const Params p = read_params(node, scalar_part(step_spec(), {"set", "solver"}), m.units, names({"set", "solver"}));
+    const Params p = read_params(node, step_spec(), m.units);
     Step s;
     s.name = p.text("name");
     s.increments = static_cast<int>(p.integer("increments"));
@@ -300,7 +288,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
 void read_output(const DeckNode& deck, Model& m) {
   if (!deck.has("output")) return;
   const DeckNode out = deck["output"];
-  const Params p = read_params(out, scalar_part(output_spec(), {"history"}), m.units, names({"history"}));
+  const Params p = read_params(out, output_spec(), m.units);
   m.output.vtk = p.boolean("vtk");
   m.output.vtk_segments = static_cast<int>(p.integer("vtk_segments"));
   if (!out.has("history")) return;

@@ -37,6 +37,13 @@ ParamSpec numbers(std::string name, Dimension dim, int count, std::string doc) {
   p.count = count;
   return p;
 }
+ParamSpec structured(std::string name, std::string shape, std::string doc) {
+  ParamSpec p = number(std::move(name), Dimension::dimensionless, std::move(doc));
+  p.type = ParamType::structured;
+  p.default_text = "";
+  p.choices = {std::move(shape)};
+  return p;
+}
 ParamSpec required(ParamSpec p) {
   p.required = true;
   return p;
@@ -116,6 +123,10 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
   Params out;
   out.self_ = node.where();
   for (const auto& p : spec.params) {
+    if (p.type == ParamType::structured) {
+      if (p.required) node.required(p.name);
+      continue;  // read by the section itself
+    }
     const DeckNode given = node[p.name];
     const bool missing = !given.yaml().IsDefined() || given.yaml().IsNull();
     if (missing) {
@@ -143,6 +154,7 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
           v.fail("'" + val.str + "' is not one of: " + list);
         }
         break;
+      case ParamType::structured: break;
       case ParamType::numbers: {
         if (!v.is_sequence()) v.fail("expected a list of " + std::string(dimension_name(p.dim)) + " values");
         for (const auto& item : v.items()) val.nums.push_back(read_quantity(item, p.dim, units));
@@ -171,16 +183,22 @@ std::string params_markdown(const ComponentSpec& spec) {
                        : p.type == ParamType::integer ? "integer"
                        : p.type == ParamType::text    ? "text"
                        : p.type == ParamType::boolean ? "boolean"
-                                                      : "list of numbers";
-    std::string type_s = type;
+                       : p.type == ParamType::numbers ? "list of numbers"
+                                                      : "";
+    std::string type_s = p.type == ParamType::structured ? p.choices.front() : type;
     if (p.type == ParamType::numbers && p.count > 0) type_s += fmt::format(" ({})", p.count);
     std::string range = range_text(p);
-    if (!p.choices.empty()) {
+    if (!p.choices.empty() && p.type != ParamType::structured) {
       for (const auto& c : p.choices) range += (range.empty() ? "`" : ", `") + c + "`";
     }
     const std::string dim = p.dim == Dimension::dimensionless ? "–" : dimension_name(p.dim);
     const std::string req = p.required ? "required" : (p.default_text.empty() ? "optional" : "`" + p.default_text + "`");
-    s += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", p.name, type_s, dim, req, range.empty() ? "–" : range, p.doc);
+    std::string doc;  // a '|' would end the Markdown cell
+    for (char c : p.doc) {
+      if (c == '|') doc.push_back('\\');
+      doc.push_back(c);
+    }
+    s += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", p.name, type_s, dim, req, range.empty() ? "–" : range, doc);
   }
   return s;
 }

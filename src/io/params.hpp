@@ -14,7 +14,8 @@
 
 namespace tunica {
 
-enum class ParamType { number, integer, text, boolean, numbers };
+/// `structured`: a list or map the section reads itself (documented here, validated there).
+enum class ParamType { number, integer, text, boolean, numbers, structured };
 
 /// One declared parameter.
 struct ParamSpec {
@@ -44,6 +45,8 @@ ParamSpec integer(std::string name, std::string doc);
 ParamSpec text(std::string name, std::string doc);
 ParamSpec boolean(std::string name, std::string doc);
 ParamSpec numbers(std::string name, Dimension dim, int count, std::string doc);
+/// A list or map read by the section itself; `shape` names it in the reference ("map", "list", ...).
+ParamSpec structured(std::string name, std::string shape, std::string doc);
 ParamSpec required(ParamSpec p);
 ParamSpec with_default(ParamSpec p, std::string default_text);
 ParamSpec positive(ParamSpec p);

@@ -68,9 +68,9 @@ void Analysis::run(AnalysisObserver& observer) {
         const std::string why = fmt::format("{} (relative residual {:.3e})", r.failure, r.last_relative_residual);
         if (attempt >= step.solver.max_cutbacks) {
           throw SolveError(fmt::format(
-              "step {} '{}', increment {} (step fraction {:.9g} → {:.9g}): {}; no convergence after {} cut-back(s). "
+              "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence after {} cut-back(s). "
               "Results of the converged increments are kept.",
-              info.step, step.name, info.increment, t, t + dt, why, step.solver.max_cutbacks));
+              info.step, step.name, info.increment, t, dt, why, step.solver.max_cutbacks));
         }
         observer.on_cutback(info, why);
         dt *= 0.5;
