@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/deck_limits.hpp"
 #include "mesh/meridian.hpp"
 
 namespace tunica {
@@ -171,6 +172,8 @@ void read_parts(const DeckNode& deck, Model& m) {
     auto gen = meridian_types().find(type);
     if (gen == meridian_types().end()) mesh["type"].fail("unknown mesh type '" + type + "' (known: line, arc)");
     const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
+    if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
+      mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
     const Meridian points = gen->second.make(mp);
     const int first = m.num_nodes();
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -390,6 +393,7 @@ std::vector<ComponentSpec> deck_sections() {
 }
 
 Model read_deck_text(const std::string& text, const std::string& file) {
+  check_deck_limits(text, file);
   YAML::Node root;
   try {
     root = YAML::Load(text);
