@@ -19,6 +19,7 @@ fi
 bash tools/install-deps.sh
 CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUNICA_FUZZ=ON >/dev/null
 cmake --build build-fuzz -j"$(nproc)"
+export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp"
 for harness in build-fuzz/fuzz/*_fuzzer; do
   name=$(basename "$harness" _fuzzer)
   mkdir -p "build-fuzz/corpus/$name"
