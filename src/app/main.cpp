@@ -5,11 +5,15 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <memory>
 
 #include "fit/fit_command.hpp"
 #include "io/deck.hpp"
 #include "io/reference.hpp"
+#include "output/restart_file.hpp"
 #include "output/run_writer.hpp"
+#include "output/stop_signal.hpp"
 #include "solver/analysis.hpp"
 
 namespace {
@@ -18,12 +22,45 @@ constexpr int kInputErrorExit = 2;
 constexpr int kSolveErrorExit = 3;
 constexpr int kOtherErrorExit = 4;
 
-int run(const std::string& deck, const std::string& out, bool quiet) {
+/// Errors unless the restart record fits the model (same DOFs, boundaries, loads; a step left to run).
+void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, const std::string& file) {
+  const tunica::Checkpoint& c = r.checkpoint;
+  const auto fail = [&](const std::string& what) { throw tunica::InputError({file, 0, 0, ""}, what); };
+  if (c.u.size() != m.num_dofs())
+    fail(fmt::format("the run to resume has {} DOFs, this deck {}: not the same model", c.u.size(), m.num_dofs()));
+  if (c.loads.boundary.size() != m.boundaries.size() || c.step_start.boundary.size() != m.boundaries.size() ||
+      c.loads.pressure.size() != m.loads.size() || c.step_start.pressure.size() != m.loads.size())
+    fail("the run to resume has other boundary conditions or loads than this deck");
+  if (c.step >= static_cast<int>(m.steps.size()) || (c.step == static_cast<int>(m.steps.size()) - 1 && c.fraction >= 1.0))
+    fail("the run to resume has already completed every step of this deck");
+}
+
+int run(const std::string& deck, std::string out, const std::string& restart, bool quiet) {
   const tunica::Model model = tunica::read_deck(deck);
-  tunica::RunWriter writer(model, out, quiet ? nullptr : stdout);
+  std::unique_ptr<tunica::RestartRecord> resume;
+  if (!restart.empty()) {
+    if (!out.empty() && std::filesystem::path(out) != std::filesystem::path(restart))
+      throw tunica::InputError({deck, 0, 0, ""}, "--restart DIR continues the run in DIR: leave out -o or give the same directory");
+    out = restart;
+    const std::string file = restart + "/restart.txt";
+    resume = std::make_unique<tunica::RestartRecord>(tunica::read_restart(file));
+    check_restart_fits(model, *resume, file);
+    if (!quiet)
+      std::printf("resuming from step %d, increment %d (step fraction %.6g) in %s\n", resume->checkpoint.step + 1,
+                  resume->checkpoint.increment, resume->checkpoint.fraction, restart.c_str());
+  }
+  tunica::RunWriter writer(model, out, quiet ? nullptr : stdout, resume.get());
   tunica::Analysis analysis(model);
+  tunica::install_stop_handlers();
   const auto t0 = std::chrono::steady_clock::now();
-  analysis.run(writer);
+  try {
+    analysis.run(writer, resume ? &resume->checkpoint : nullptr);
+  } catch (const tunica::Interrupted& e) {
+    const int sig = tunica::stop_signal();
+    std::fprintf(stderr, "tunica: interrupted by signal %d: %s; every converged increment is kept. Continue with:\n"
+                         "  tunica run %s --restart %s\n", sig, e.what(), deck.c_str(), out.c_str());
+    return 128 + sig;
+  }
   if (!quiet)
     std::printf("done in %.3f s; results in %s\n",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), out.c_str());
@@ -47,11 +84,16 @@ int main(int argc, char** argv) {
   CLI::App app{"Tunica: large-strain analysis of thin incompressible hyperelastic membranes"};
   app.set_version_flag("--version", std::string(TUNICA_VERSION));
   app.require_subcommand(1);
-  std::string deck, out;
+  std::string deck, out, restart;
   bool quiet = false;
   auto* run_cmd = app.add_subcommand("run", "solve a deck and write results");
   run_cmd->add_option("deck", deck, "YAML deck")->required();
-  run_cmd->add_option("-o,--output", out, "output directory")->required();
+  auto* out_opt = run_cmd->add_option("-o,--output", out, "output directory");
+  auto* restart_opt = run_cmd->add_option("--restart", restart,
+                                          "continue the run in DIR from its last converged increment (writes into DIR)");
+  run_cmd->callback([&] {
+    if (out_opt->count() == 0 && restart_opt->count() == 0) throw CLI::RequiredError("-o,--output or --restart");
+  });
   run_cmd->add_flag("-q,--quiet", quiet, "no progress output");
   auto* check_cmd = app.add_subcommand("check", "validate a deck without solving");
   check_cmd->add_option("deck", deck, "YAML deck")->required();
@@ -87,7 +129,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kInputErrorExit;
   }
   try {
-    if (*run_cmd) return run(deck, out, quiet);
+    if (*run_cmd) return run(deck, out, restart, quiet);
     if (*check_cmd) return check(deck);
     if (*fit_cmd) {
       fit.plot = !no_plot;

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/deck_limits.hpp"
 #include "mesh/meridian.hpp"
 
 namespace tunica {
@@ -132,7 +133,9 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
     return k;
   }());
   // Keys not given keep the base values: read only the present ones.
-  for (const auto& [key, value] : node.entries()) {
+  for (const auto& entry : node.entries()) {
+    const std::string& key = entry.first;
+    const DeckNode& value = entry.second;
     ComponentSpec one = solver_spec();
     one.params.erase(std::remove_if(one.params.begin(), one.params.end(), [&](const ParamSpec& p) { return p.name != key; }),
                      one.params.end());
@@ -171,6 +174,8 @@ void read_parts(const DeckNode& deck, Model& m) {
     auto gen = meridian_types().find(type);
     if (gen == meridian_types().end()) mesh["type"].fail("unknown mesh type '" + type + "' (known: line, arc)");
     const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
+    if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
+      mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
     const Meridian points = gen->second.make(mp);
     const int first = m.num_nodes();
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -274,7 +279,9 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     s.increments = static_cast<int>(p.integer("increments"));
     s.solver = read_solver(node["solver"], m.units, solver);
     if (node.has("set")) {
-      for (const auto& [target, value] : node["set"].entries()) {
+      for (const auto& entry : node["set"].entries()) {
+        const std::string& target = entry.first;  // (a named variable: lambdas below capture it)
+        const DeckNode& value = entry.second;
         const bool is_boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == target; });
         const bool is_load = std::any_of(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == target; });
         if (!is_boundary && !is_load) value.fail("'" + target + "' is neither a boundary nor a load");
@@ -390,6 +397,7 @@ std::vector<ComponentSpec> deck_sections() {
 }
 
 Model read_deck_text(const std::string& text, const std::string& file) {
+  check_deck_limits(text, file);
   YAML::Node root;
   try {
     root = YAML::Load(text);

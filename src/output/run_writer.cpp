@@ -3,14 +3,39 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "output/atomic_file.hpp"
 #include "output/history.hpp"
+#include "output/stop_signal.hpp"
 
 namespace tunica {
 
-RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progress)
+namespace {
+
+/// The first `rows` data rows of a CSV file written by an earlier run, after checking its header.
+std::string csv_prefix(const std::string& path, const std::string& header, int rows) {
+  std::ifstream in(path);
+  if (!in) throw InputError({path, 0, 0, ""}, "cannot read the file of the run to resume");
+  std::string line, out;
+  if (!std::getline(in, line) || line + "\n" != header)
+    throw InputError({path, 1, 0, ""}, "its columns differ from what this deck writes:\n  file: " + line +
+                                           "\n  deck: " + header.substr(0, header.size() - 1));
+  out = header;
+  for (int k = 0; k < rows; ++k) {
+    if (!std::getline(in, line)) throw InputError({path, k + 2, 0, ""}, "holds fewer rows than the restart file records");
+    out += line + "\n";
+  }
+  return out;
+}
+
+std::string frame_file(const char* series, std::size_t frame) { return fmt::format("vtk/{}_{:06d}.vtu", series, frame); }
+
+}  // namespace
+
+RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume)
     : model_(model),
       dir_(std::move(directory)),
       progress_(progress),
@@ -24,12 +49,24 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
   history_ += "\n";
   newton_ = "step,increment,attempt,iteration,time,residual,relative_residual,energy,relative_energy,"
             "assembly_s,solve_s\n";
+  if (resume) {
+    history_ = csv_prefix(dir_ + "/history.csv", history_, resume->history_rows);
+    newton_ = csv_prefix(dir_ + "/newton.csv", newton_, resume->newton_rows);
+    history_rows_ = resume->history_rows;
+    newton_rows_ = resume->newton_rows;
+    frame_times_ = resume->frame_times;
+    for (std::size_t f = 0; f < frame_times_.size(); ++f) {
+      meridian_.preload(frame_times_[f], frame_file("meridian", f));
+      surface_.preload(frame_times_[f], frame_file("surface", f));
+    }
+  }
 }
 
 void RunWriter::on_iteration(const IncrementInfo& info, const IterationRecord& r) {
   newton_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{:.3e},{:.3e}\n", info.step, info.increment,
                          info.attempt, r.iteration, info.time, r.residual, r.relative_residual, r.energy,
                          r.relative_energy, r.assembly_seconds, r.solve_seconds);
+  ++newton_rows_;
   if (progress_)
     std::fprintf(progress_, "  step %d increment %d iteration %d  residual %.3e  relative %.3e\n", info.step,
                  info.increment, r.iteration, r.residual, r.relative_residual);
@@ -46,17 +83,20 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   history_ += fmt::format("{},{},{:.12g}", info.step, info.increment, info.time);
   for (double v : values) history_ += fmt::format(",{:.12g}", v);
   history_ += "\n";
+  ++history_rows_;
   write_file_atomically(dir_ + "/history.csv", history_);
   write_file_atomically(dir_ + "/newton.csv", newton_);
   if (model_.output.vtk) {
-    const std::string m = fmt::format("vtk/meridian_{:06d}.vtu", frame_);
-    const std::string s = fmt::format("vtk/surface_{:06d}.vtu", frame_);
-    write_file_atomically(dir_ + "/" + m, meridian_vtu(analysis));
-    write_file_atomically(dir_ + "/" + s, surface_vtu(analysis, model_.output.vtk_segments));
-    meridian_.add(info.time, m);
-    surface_.add(info.time, s);
+    const std::size_t frame = frame_times_.size();
+    write_file_atomically(dir_ + "/" + frame_file("meridian", frame), meridian_vtu(analysis));
+    write_file_atomically(dir_ + "/" + frame_file("surface", frame), surface_vtu(analysis, model_.output.vtk_segments));
+    meridian_.add(info.time, frame_file("meridian", frame));
+    surface_.add(info.time, frame_file("surface", frame));
+    frame_times_.push_back(info.time);
   }
-  ++frame_;
+  // Last: the restart file never claims more than the other files hold.
+  RestartRecord r{analysis.checkpoint(), history_rows_, newton_rows_, frame_times_, model_.deck_file};
+  write_file_atomically(dir_ + "/restart.txt", restart_text(r));
   if (progress_) {
     if (info.step == 0)
       std::fprintf(progress_, "reference state written\n");
@@ -66,5 +106,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
     std::fflush(progress_);
   }
 }
+
+bool RunWriter::stop_requested() { return stop_signal() != 0; }
 
 }  // namespace tunica

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 
 #include "output/atomic_file.hpp"
@@ -38,36 +40,58 @@ std::vector<CellField> cell_fields(const Analysis& a) {
   return f;
 }
 
-std::string data_array(const std::string& name, int components, const std::vector<double>& v) {
-  std::string s = fmt::format("<DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n",
+/// Base64 of raw bytes (RFC 4648), as VTK's inline binary format expects.
+void base64(const unsigned char* data, std::size_t n, std::string& out) {
+  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::size_t i = 0;
+  for (; i + 2 < n; i += 3) {
+    const unsigned v = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
+    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], t[v & 63]};
+  }
+  if (i + 1 == n) {
+    const unsigned v = data[i] << 16;
+    out += {t[v >> 18], t[(v >> 12) & 63], '=', '='};
+  } else if (i + 2 == n) {
+    const unsigned v = (data[i] << 16) | (data[i + 1] << 8);
+    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], '='};
+  }
+}
+
+/// A DataArray in VTK's inline binary format: base64 of (UInt64 byte count, values).
+template <class T>
+std::string data_array(const std::string& name, const char* type, int components, const std::vector<T>& v) {
+  std::string s = fmt::format("<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"binary\">\n", type,
                               name, components);
-  for (std::size_t i = 0; i < v.size(); ++i) s += fmt::format("{:.12g}{}", v[i], (i + 1) % 12 == 0 ? "\n" : " ");
+  std::vector<unsigned char> bytes(sizeof(std::uint64_t) + v.size() * sizeof(T));
+  const std::uint64_t count = v.size() * sizeof(T);
+  std::memcpy(bytes.data(), &count, sizeof count);
+  if (!v.empty()) std::memcpy(bytes.data() + sizeof count, v.data(), count);
+  base64(bytes.data(), bytes.size(), s);
   return s + "\n</DataArray>\n";
 }
 
-std::string grid(const std::vector<double>& points, const std::vector<int>& connectivity, int nodes_per_cell,
-                 int vtk_type, const std::vector<double>& displacement, const std::vector<CellField>& cells,
+std::string grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity, int nodes_per_cell,
+                 std::uint8_t vtk_type, const std::vector<double>& displacement, const std::vector<CellField>& cells,
                  int cell_repeat) {
   const std::size_t np = points.size() / 3, nc = connectivity.size() / nodes_per_cell;
   std::string s =
-      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "<UnstructuredGrid>\n";
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
   s += fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", np, nc);
-  s += data_array("Points", 3, points) + "</Points>\n<Cells>\n";
-  s += "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (int c : connectivity) s += fmt::format("{} ", c);
-  s += "\n</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t c = 1; c <= nc; ++c) s += fmt::format("{} ", c * nodes_per_cell);
-  s += "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t c = 0; c < nc; ++c) s += fmt::format("{} ", vtk_type);
-  s += "\n</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n";
-  s += data_array("displacement", 3, displacement) + "</PointData>\n<CellData>\n";
+  s += data_array("Points", "Float64", 3, points) + "</Points>\n<Cells>\n";
+  std::vector<std::int64_t> offsets(nc);
+  for (std::size_t c = 0; c < nc; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * nodes_per_cell);
+  s += data_array("connectivity", "Int64", 1, connectivity);
+  s += data_array("offsets", "Int64", 1, offsets);
+  s += data_array("types", "UInt8", 1, std::vector<std::uint8_t>(nc, vtk_type));
+  s += "</Cells>\n<PointData Vectors=\"displacement\">\n";
+  s += data_array("displacement", "Float64", 3, displacement) + "</PointData>\n<CellData>\n";
   for (const auto& f : cells) {
     std::vector<double> v;
     v.reserve(f.values.size() * cell_repeat);
     for (double x : f.values)
       for (int k = 0; k < cell_repeat; ++k) v.push_back(x);
-    s += data_array(f.name, 1, v);
+    s += data_array(f.name, "Float64", 1, v);
   }
   return s + "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
@@ -83,7 +107,7 @@ std::string meridian_vtu(const Analysis& a) {
     pts.insert(pts.end(), {m.X[n](0) + ur, 0.0, m.X[n](1) + uz});
     disp.insert(disp.end(), {ur, 0.0, uz});
   }
-  std::vector<int> conn;
+  std::vector<std::int64_t> conn;
   for (const auto& p : m.parts)
     for (const auto& e : p.elements) conn.insert(conn.end(), {e[0], e[1]});
   return grid(pts, conn, 2, 3 /*VTK_LINE*/, disp, cell_fields(a), 1);
@@ -102,7 +126,7 @@ std::string surface_vtu(const Analysis& a, int segments) {
       disp.insert(disp.end(), {ur * c, ur * s, uz});
     }
   }
-  std::vector<int> conn;
+  std::vector<std::int64_t> conn;
   for (const auto& p : m.parts)
     for (const auto& e : p.elements)
       for (int j = 0; j < segments; ++j) {

@@ -17,7 +17,9 @@ std::string surface_vtu(const Analysis& analysis, int segments);
 /// A ParaView .pvd collection that lists one dataset per time value.
 class PvdSeries {
 public:
-  PvdSeries(std::string path) : path_(std::move(path)) {}
+  explicit PvdSeries(std::string path) : path_(std::move(path)) {}
+  /// Lists datasets already written (when a run resumes) without rewriting the .pvd.
+  void preload(double time, const std::string& relative_file) { entries_.emplace_back(time, relative_file); }
   /// Adds a dataset (path relative to the .pvd) and rewrites the .pvd atomically.
   void add(double time, const std::string& relative_file);
 

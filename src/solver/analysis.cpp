@@ -7,85 +7,104 @@
 namespace tunica {
 
 Analysis::Analysis(const Model& model) : model_(model), system_(model) {
-  u_.setZero(model.num_dofs());
-  loads_.boundary.assign(model.boundaries.size(), 0.0);
-  loads_.pressure.assign(model.loads.size(), 0.0);
+  state_.u.setZero(model.num_dofs());
+  state_.loads.boundary.assign(model.boundaries.size(), 0.0);
+  state_.loads.pressure.assign(model.loads.size(), 0.0);
+  state_.step_start = state_.loads;
   reactions_.setZero(model.num_dofs());
 }
 
 void Analysis::update_reactions() {
   Eigen::VectorXd R;
-  system_.assemble(u_, loads_, R, nullptr);
+  system_.assemble(state_.u, state_.loads, R, nullptr);
   reactions_.setZero(model_.num_dofs());
   for (int d : system_.prescribed_dofs()) reactions_(d) = R(d);
 }
 
-void Analysis::run(AnalysisObserver& observer) {
-  IncrementInfo ref;
-  update_reactions();
-  observer.on_increment(*this, ref);
-  for (std::size_t s = 0; s < model_.steps.size(); ++s) {
-    const Step& step = model_.steps[s];
-    // Each amplitude ramps from its value at the start of the step to the step's target.
-    const LoadState start = loads_;
-    LoadState end = loads_;
-    for (std::size_t k = 0; k < model_.boundaries.size(); ++k)
-      if (auto it = step.targets.find(model_.boundaries[k].name); it != step.targets.end()) end.boundary[k] = it->second;
-    for (std::size_t k = 0; k < model_.loads.size(); ++k)
-      if (auto it = step.targets.find(model_.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
-    auto at = [&](double t) {
-      LoadState l = start;
-      for (std::size_t k = 0; k < l.boundary.size(); ++k) l.boundary[k] += t * (end.boundary[k] - start.boundary[k]);
-      for (std::size_t k = 0; k < l.pressure.size(); ++k) l.pressure[k] += t * (end.pressure[k] - start.pressure[k]);
-      return l;
-    };
+void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
+  if (resume) {
+    state_ = *resume;
+    update_reactions();
+  } else {
+    update_reactions();
+    observer.on_increment(*this, IncrementInfo{});
+  }
+  for (; state_.step < static_cast<int>(model_.steps.size()); ++state_.step) {
+    run_step(observer);
+    state_.step_start = state_.loads;
+    state_.fraction = 0;
+    state_.dt = 0;
+    state_.increment = 0;
+    state_.reduced_successes = 0;
+  }
+}
 
-    auto solver = make_linear_solver(step.solver.linear_solver);
-    const double nominal = 1.0 / step.increments;
-    double t = 0, dt = nominal;
-    int increment = 0, reduced_successes = 0;
-    while (t < 1.0) {
-      if (t + dt > 1.0 - 1e-9 * nominal) dt = 1.0 - t;
-      IncrementInfo info;
-      info.step = static_cast<int>(s) + 1;
-      info.step_name = step.name;
-      info.increment = increment + 1;
-      for (int attempt = 0;; ++attempt) {
-        info.attempt = attempt;
-        info.fraction = t + dt;
-        info.time = static_cast<double>(s) + info.fraction;
-        const LoadState trial = at(info.fraction);
-        Eigen::VectorXd u = u_;
-        system_.apply_boundary(trial, u);
-        const NewtonResult r = newton(system_, *solver, trial, u, step.solver,
-                                      [&](const IterationRecord& rec) { observer.on_iteration(info, rec); });
-        if (r.converged) {
-          u_ = u;
-          loads_ = trial;
-          info.iterations = r.iterations;
-          break;
-        }
-        const std::string why = fmt::format("{} (relative residual {:.3e})", r.failure, r.last_relative_residual);
-        if (attempt >= step.solver.max_cutbacks) {
-          throw SolveError(fmt::format(
-              "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence after {} cut-back(s). "
-              "Results of the converged increments are kept.",
-              info.step, step.name, info.increment, t, dt, why, step.solver.max_cutbacks));
-        }
-        observer.on_cutback(info, why);
-        dt *= 0.5;
-        reduced_successes = 0;
-        info.fraction = t + dt;
+void Analysis::run_step(AnalysisObserver& observer) {
+  const int s = state_.step;
+  const Step& step = model_.steps[s];
+  // Each amplitude ramps from its value at the start of the step to the step's target.
+  const LoadState start = state_.step_start;
+  LoadState end = start;
+  for (std::size_t k = 0; k < model_.boundaries.size(); ++k)
+    if (auto it = step.targets.find(model_.boundaries[k].name); it != step.targets.end()) end.boundary[k] = it->second;
+  for (std::size_t k = 0; k < model_.loads.size(); ++k)
+    if (auto it = step.targets.find(model_.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
+  const auto at = [&](double t) {
+    LoadState l = start;
+    for (std::size_t k = 0; k < l.boundary.size(); ++k) l.boundary[k] += t * (end.boundary[k] - start.boundary[k]);
+    for (std::size_t k = 0; k < l.pressure.size(); ++k) l.pressure[k] += t * (end.pressure[k] - start.pressure[k]);
+    return l;
+  };
+
+  auto solver = make_linear_solver(step.solver.linear_solver);
+  const double nominal = 1.0 / step.increments;
+  double t = state_.fraction;
+  double dt = state_.dt > 0 ? state_.dt : nominal;
+  while (t < 1.0) {
+    if (t + dt > 1.0 - 1e-9 * nominal) dt = 1.0 - t;
+    IncrementInfo info;
+    info.step = s + 1;
+    info.step_name = step.name;
+    info.increment = state_.increment + 1;
+    for (int attempt = 0;; ++attempt) {
+      info.attempt = attempt;
+      info.fraction = t + dt;
+      info.time = static_cast<double>(s) + info.fraction;
+      const LoadState trial = at(info.fraction);
+      Eigen::VectorXd u = state_.u;
+      system_.apply_boundary(trial, u);
+      const NewtonResult r = newton(system_, *solver, trial, u, step.solver,
+                                    [&](const IterationRecord& rec) { observer.on_iteration(info, rec); });
+      if (r.converged) {
+        state_.u = u;
+        state_.loads = trial;
+        info.iterations = r.iterations;
+        break;
       }
-      t = info.fraction;
-      ++increment;
-      if (dt < nominal * (1 - 1e-12) && ++reduced_successes >= 2) {
-        dt = std::min(2.0 * dt, nominal);
-        reduced_successes = 0;
+      const std::string why = fmt::format("{} (relative residual {:.3e})", r.failure, r.last_relative_residual);
+      if (attempt >= step.solver.max_cutbacks) {
+        throw SolveError(fmt::format(
+            "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence after {} cut-back(s). "
+            "Results of the converged increments are kept.",
+            info.step, step.name, info.increment, t, dt, why, step.solver.max_cutbacks));
       }
-      update_reactions();
-      observer.on_increment(*this, info);
+      observer.on_cutback(info, why);
+      dt *= 0.5;
+      state_.reduced_successes = 0;
     }
+    t = info.fraction;
+    ++state_.increment;
+    if (dt < nominal * (1 - 1e-12) && ++state_.reduced_successes >= 2) {
+      dt = std::min(2.0 * dt, nominal);
+      state_.reduced_successes = 0;
+    }
+    state_.fraction = t;
+    state_.dt = dt;
+    update_reactions();
+    observer.on_increment(*this, info);
+    if (observer.stop_requested())
+      throw Interrupted(fmt::format("stopped on request after step {} '{}', increment {} (step fraction {:.9g})",
+                                    info.step, step.name, info.increment, t));
   }
 }
 

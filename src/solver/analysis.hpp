@@ -3,6 +3,8 @@
 // linearly; each increment is solved by Newton. An increment that does not
 // converge is halved and retried (at most `max_cutbacks` times in a row), and
 // the increment size grows back after two converged reduced increments.
+// The whole progress state is a Checkpoint, so that a run can be resumed
+// exactly where a converged increment left it.
 #include <string>
 
 #include "assembly/system.hpp"
@@ -20,6 +22,18 @@ struct IncrementInfo {
   int iterations = 0;      ///< Newton iterations of the converged attempt
 };
 
+/// Everything needed to continue a run after a converged increment.
+struct Checkpoint {
+  int step = 0;              ///< 0-based index of the step in progress
+  double fraction = 0;       ///< fraction of that step done
+  double dt = 0;             ///< size of the next increment (0: the step's nominal size)
+  int increment = 0;         ///< converged increments in the step so far
+  int reduced_successes = 0; ///< converged increments since the last cut-back
+  LoadState step_start;      ///< amplitudes at the start of the step
+  LoadState loads;           ///< current amplitudes
+  Eigen::VectorXd u;         ///< current displacements
+};
+
 class Analysis;
 
 /// What a run reports to (output writers, progress, tests).
@@ -30,28 +44,41 @@ public:
   virtual void on_cutback(const IncrementInfo&, const std::string& /*why*/) {}
   /// After each converged increment, and once for the reference state (step 0).
   virtual void on_increment(const Analysis&, const IncrementInfo&) {}
+  /// Asked after each converged increment: true stops the run (Interrupted).
+  virtual bool stop_requested() { return false; }
+};
+
+/// The run stopped on request (a signal) after a converged increment.
+class Interrupted : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
 };
 
 class Analysis {
 public:
   explicit Analysis(const Model& model);
-  /// Runs every step. Throws SolveError when an increment cannot converge;
-  /// every converged increment has been reported before.
-  void run(AnalysisObserver& observer);
+  /// Runs every step, from the reference state or from `resume`. Throws SolveError
+  /// when an increment cannot converge and Interrupted when the observer asks to
+  /// stop; every converged increment has been reported before.
+  void run(AnalysisObserver& observer, const Checkpoint* resume = nullptr);
 
   const Model& model() const { return model_; }
   const System& system() const { return system_; }
-  const Eigen::VectorXd& displacement() const { return u_; }
-  const LoadState& loads() const { return loads_; }
+  const Eigen::VectorXd& displacement() const { return state_.u; }
+  const LoadState& loads() const { return state_.loads; }
   /// Reaction forces: R = f_int − f_ext at prescribed DOFs (0 elsewhere), at the last converged state.
   const Eigen::VectorXd& reactions() const { return reactions_; }
+  /// The progress state after the last converged increment.
+  const Checkpoint& checkpoint() const { return state_; }
 
 private:
   void update_reactions();
+  /// Solves step `state_.step` from `state_.fraction` to its end.
+  void run_step(AnalysisObserver& observer);
+
   const Model& model_;
   System system_;
-  Eigen::VectorXd u_;
-  LoadState loads_;
+  Checkpoint state_;
   Eigen::VectorXd reactions_;
 };
 

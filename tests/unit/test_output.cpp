@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <unistd.h>
 
@@ -74,18 +76,43 @@ TEST(Output, ParaViewSeriesListEveryFrameWithConsistentGrids) {
   }
 }
 
+/// Decodes VTK's inline binary DataArray: base64 of a UInt64 byte count followed by the values.
+std::vector<double> decode_float64(const std::string& vtu, const std::string& name) {
+  const auto begin = vtu.find('>', vtu.find("Name=\"" + name + "\"")) + 1;
+  std::string text = vtu.substr(begin, vtu.find("</DataArray>", begin) - begin);
+  std::string bytes;
+  unsigned buffer = 0;
+  int bits = 0;
+  for (char ch : text) {
+    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* p = std::strchr(alphabet, ch);
+    if (ch == '=' || ch == '\n' || !p || ch == 0) continue;
+    buffer = (buffer << 6) | static_cast<unsigned>(p - alphabet);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      bytes.push_back(static_cast<char>((buffer >> bits) & 0xff));
+    }
+  }
+  std::uint64_t count = 0;
+  std::memcpy(&count, bytes.data(), 8);
+  EXPECT_EQ(count + 8, bytes.size()) << name;
+  std::vector<double> v(count / 8);
+  std::memcpy(v.data(), bytes.data() + 8, count);
+  return v;
+}
+
 TEST(Output, RevolvedSurfaceLiesAtTheReportedRadius) {
   const fs::path out = run_example();
   const std::string vtu = read_text((out / "vtk" / "surface_000026.vtu").string());
-  const auto begin = vtu.find('>', vtu.find("Name=\"Points\"")) + 1;
-  std::istringstream pts(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
+  const std::vector<double> pts = decode_float64(vtu, "Points");
   const auto h = lines(read_text((out / "history.csv").string()));
   const double radius = std::stod(h.back().substr(h.back().rfind(',', h.back().rfind(',') - 1) + 1));
-  double x, y, z;
-  int n = 0;
-  while (pts >> x >> y >> z) {
-    EXPECT_NEAR(std::hypot(x, y), radius, 1e-9);
-    ++n;
-  }
-  EXPECT_EQ(n, 96);
+  ASSERT_EQ(pts.size(), 3u * 96);
+  for (std::size_t i = 0; i < pts.size(); i += 3) EXPECT_NEAR(std::hypot(pts[i], pts[i + 1]), radius, 1e-9);
+  // The hoop stretch field holds λθ of history.csv on every one of the 48 cells.
+  const std::vector<double> lt = decode_float64(vtu, "lambda_hoop");
+  ASSERT_EQ(lt.size(), 48u);
+  const double lambda_theta = std::stod(h.back().substr(h.back().find(',', h.back().find(',', h.back().find(',', h.back().find(',') + 1) + 1) + 1) + 1));
+  for (double x : lt) EXPECT_NEAR(x, lambda_theta, 1e-9);
 }

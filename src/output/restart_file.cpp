@@ -1,0 +1,135 @@
+#include "output/restart_file.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace tunica {
+
+namespace {
+
+constexpr const char* kMagic = "tunica-restart 1";
+constexpr long kMaxValues = 100'000'000;  // refuse absurd counts before allocating
+
+void put(std::string& s, const char* key, const std::vector<double>& v) {
+  s += fmt::format("{} {}", key, v.size());
+  for (double x : v) s += fmt::format(" {:a}", x);
+  s += "\n";
+}
+
+class Reader {
+public:
+  Reader(const std::string& path) : path_(path), in_(path) {
+    if (!in_) throw InputError({path, 0, 0, ""}, std::string("cannot read the restart file: ") + std::strerror(errno));
+  }
+  /// Next line, which must start with `key`; returns the rest split in words.
+  std::vector<std::string> line(const std::string& key) {
+    std::string l;
+    if (!std::getline(in_, l)) fail("ends early: expected '" + key + "'");
+    ++line_;
+    std::istringstream ss(l);
+    std::string k;
+    ss >> k;
+    if (k != key) fail("expected '" + key + "', got '" + k + "'");
+    std::vector<std::string> words;
+    for (std::string w; ss >> w;) words.push_back(w);
+    return words;
+  }
+  double number(const std::string& w) {
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(w.c_str(), &end);
+    if (w.empty() || *end || errno == ERANGE) fail("not a number: '" + w + "'");
+    return v;
+  }
+  long integer(const std::string& w, long max) {
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(w.c_str(), &end, 10);
+    if (w.empty() || *end || errno == ERANGE || v < 0 || v > max) fail("not a count in [0, " + std::to_string(max) + "]: '" + w + "'");
+    return v;
+  }
+  long scalar_int(const std::string& key, long max) {
+    auto w = line(key);
+    if (w.size() != 1) fail("'" + key + "' takes one value");
+    return integer(w[0], max);
+  }
+  double scalar(const std::string& key) {
+    auto w = line(key);
+    if (w.size() != 1) fail("'" + key + "' takes one value");
+    return number(w[0]);
+  }
+  std::vector<double> vector(const std::string& key) {
+    auto w = line(key);
+    if (w.empty()) fail("'" + key + "' needs a count");
+    const long n = integer(w[0], kMaxValues);
+    if (static_cast<long>(w.size()) != n + 1) fail(fmt::format("'{}' announces {} values and holds {}", key, n, w.size() - 1));
+    std::vector<double> v;
+    v.reserve(n);
+    for (long i = 1; i <= n; ++i) v.push_back(number(w[i]));
+    return v;
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError({path_, line_, 0, ""}, "malformed restart file: " + what);
+  }
+
+private:
+  std::string path_;
+  std::ifstream in_;
+  int line_ = 0;
+};
+
+}  // namespace
+
+std::string restart_text(const RestartRecord& r) {
+  const Checkpoint& c = r.checkpoint;
+  std::string s = std::string(kMagic) + "\n";
+  s += "deck " + r.deck + "\n";
+  s += fmt::format("step {}\nfraction {:a}\ndt {:a}\nincrement {}\nreduced_successes {}\n", c.step, c.fraction, c.dt,
+                   c.increment, c.reduced_successes);
+  s += fmt::format("history_rows {}\nnewton_rows {}\n", r.history_rows, r.newton_rows);
+  put(s, "frame_times", r.frame_times);
+  put(s, "step_start_boundary", c.step_start.boundary);
+  put(s, "step_start_pressure", c.step_start.pressure);
+  put(s, "boundary", c.loads.boundary);
+  put(s, "pressure", c.loads.pressure);
+  put(s, "u", std::vector<double>(c.u.data(), c.u.data() + c.u.size()));
+  return s;
+}
+
+RestartRecord read_restart(const std::string& path) {
+  Reader in(path);
+  RestartRecord r;
+  {
+    std::ifstream f(path);
+    std::string first;
+    std::getline(f, first);
+    if (first != kMagic) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
+  }
+  in.line("tunica-restart");
+  const auto deck = in.line("deck");
+  for (const auto& w : deck) r.deck += (r.deck.empty() ? "" : " ") + w;
+  Checkpoint& c = r.checkpoint;
+  c.step = static_cast<int>(in.scalar_int("step", 1'000'000));
+  c.fraction = in.scalar("fraction");
+  c.dt = in.scalar("dt");
+  c.increment = static_cast<int>(in.scalar_int("increment", 1'000'000'000));
+  c.reduced_successes = static_cast<int>(in.scalar_int("reduced_successes", 1'000'000'000));
+  r.history_rows = static_cast<int>(in.scalar_int("history_rows", 1'000'000'000));
+  r.newton_rows = static_cast<int>(in.scalar_int("newton_rows", 1'000'000'000));
+  r.frame_times = in.vector("frame_times");
+  c.step_start.boundary = in.vector("step_start_boundary");
+  c.step_start.pressure = in.vector("step_start_pressure");
+  c.loads.boundary = in.vector("boundary");
+  c.loads.pressure = in.vector("pressure");
+  const auto u = in.vector("u");
+  c.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
+  if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");
+  return r;
+}
+
+}  // namespace tunica

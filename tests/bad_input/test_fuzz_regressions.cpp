@@ -1,0 +1,46 @@
+// Replays every input the fuzzers ever found a bug with (fuzz/regressions/<reader>/)
+// and the fuzzing seeds: each must be read or refused with an InputError — no
+// other exception, crash or leak (this suite also runs under ASan + UBSan).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../support/capture.hpp"
+#include "output/restart_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+std::vector<fs::path> inputs(const std::string& reader) {
+  std::vector<fs::path> out;
+  for (const char* kind : {"regressions", "corpus"}) {
+    const fs::path dir = fs::path(TUNICA_SOURCE_DIR) / "fuzz" / kind / reader;
+    if (fs::exists(dir))
+      for (const auto& f : fs::directory_iterator(dir))
+        if (f.is_regular_file() && f.path().filename() != ".gitkeep") out.push_back(f.path());
+  }
+  return out;
+}
+}  // namespace
+
+TEST(FuzzRegressions, DeckInputsAreReadOrRefusedWithAnInputError) {
+  const auto files = inputs("deck");
+  EXPECT_GE(files.size(), 2u);
+  for (const auto& f : files) {
+    try {
+      tunica::read_deck_text(tunica::test::read_text(f.string()), f.string());
+    } catch (const tunica::InputError&) {
+    }
+  }
+}
+
+TEST(FuzzRegressions, RestartInputsAreReadOrRefusedWithAnInputError) {
+  const auto files = inputs("restart");
+  EXPECT_GE(files.size(), 1u);
+  for (const auto& f : files) {
+    try {
+      tunica::read_restart(f.string());
+    } catch (const tunica::InputError&) {
+    }
+  }
+}

@@ -1,0 +1,137 @@
+// Faults during a run: a run killed with SIGKILL mid-way leaves only complete
+// files (every CSV row whole, every VTU/PVD closed, no temporary file), and
+// `tunica run --restart DIR` continues it to the same results as an
+// uninterrupted run, bit for bit in history.csv. SIGTERM stops a run after the
+// current increment with exit code 143.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "../support/capture.hpp"
+
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("tunica-restart-" + std::to_string(getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+/// A long run of the balloon example: 300 increments (20 elements, small ParaView frames).
+std::string long_deck(const fs::path& dir) {
+  const std::string path = (dir / "long.yaml").string();
+  std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  text = replace(replace(text, "increments: 20", "increments: 300"), "elements: 100}", "elements: 20}");
+  std::ofstream(path) << replace(text, "output:\n", "output:\n  vtk_segments: 8\n");
+  return path;
+}
+
+int run(const std::string& args) {
+  const int status = std::system((std::string(TUNICA_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Starts `tunica run`, waits until history.csv has at least `rows` lines, then sends `sig`.
+int start_and_signal(const std::string& deck, const fs::path& out, int rows, int sig) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int devnull = open("/dev/null", O_WRONLY);
+    dup2(devnull, 1);
+    dup2(devnull, 2);
+    execl(TUNICA_BINARY, TUNICA_BINARY, "run", deck.c_str(), "-q", "-o", out.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int k = 0; k < 20000; ++k) {
+    std::error_code ec;
+    if (fs::exists(out / "history.csv", ec)) {
+      const std::string h = read_text((out / "history.csv").string());
+      if (std::count(h.begin(), h.end(), '\n') >= rows) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  kill(pid, sig);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+void expect_complete_files(const fs::path& out) {
+  for (const auto& f : fs::recursive_directory_iterator(out)) {
+    if (!f.is_regular_file()) continue;
+    const std::string name = f.path().filename().string(), text = read_text(f.path().string());
+    EXPECT_NE(f.path().extension(), ".tmp") << name;
+    if (f.path().extension() == ".csv") {
+      std::istringstream in(text);
+      std::string line;
+      std::getline(in, line);
+      const auto fields = std::count(line.begin(), line.end(), ',');
+      while (std::getline(in, line)) EXPECT_EQ(std::count(line.begin(), line.end(), ','), fields) << name << ": " << line;
+      EXPECT_EQ(text.back(), '\n') << name;
+    } else if (f.path().extension() == ".vtu" || f.path().extension() == ".pvd") {
+      EXPECT_NE(text.find("</VTKFile>"), std::string::npos) << name;
+    }
+  }
+}
+
+std::vector<std::string> rows_without_timing(const std::string& csv) {
+  std::vector<std::string> out;
+  std::istringstream in(csv);
+  for (std::string l; std::getline(in, l);) out.push_back(l.substr(0, l.rfind(',', l.rfind(',') - 1)));  // drop assembly_s, solve_s
+  return out;
+}
+
+}  // namespace
+
+TEST(Restart, KilledRunLeavesCompleteFilesAndTheRestartReproducesTheUninterruptedRun) {
+  const fs::path dir = scratch("kill");
+  const std::string deck = long_deck(dir);
+  ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
+
+  const int status = start_and_signal(deck, dir / "killed", 40, SIGKILL);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  expect_complete_files(dir / "killed");
+  const std::string partial = read_text((dir / "killed" / "history.csv").string());
+  EXPECT_LT(std::count(partial.begin(), partial.end(), '\n'), 302);
+
+  ASSERT_EQ(run("run " + deck + " -q --restart " + (dir / "killed").string()), 0);
+  expect_complete_files(dir / "killed");
+  EXPECT_EQ(read_text((dir / "killed" / "history.csv").string()), read_text((dir / "full" / "history.csv").string()));
+  EXPECT_EQ(rows_without_timing(read_text((dir / "killed" / "newton.csv").string())),
+            rows_without_timing(read_text((dir / "full" / "newton.csv").string())));
+  EXPECT_EQ(read_text((dir / "killed" / "surface.pvd").string()), read_text((dir / "full" / "surface.pvd").string()));
+  EXPECT_EQ(read_text((dir / "killed" / "vtk" / "surface_000301.vtu").string()),
+            read_text((dir / "full" / "vtk" / "surface_000301.vtu").string()));
+}
+
+TEST(Restart, SigtermStopsAfterTheCurrentIncrementAndTheRunCanContinue) {
+  const fs::path dir = scratch("term");
+  const std::string deck = long_deck(dir);
+  const int status = start_and_signal(deck, dir / "out", 20, SIGTERM);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  expect_complete_files(dir / "out");
+  EXPECT_EQ(run("run " + deck + " -q --restart " + (dir / "out").string()), 0);
+  const std::string h = read_text((dir / "out" / "history.csv").string());
+  EXPECT_EQ(std::count(h.begin(), h.end(), '\n'), 302);
+}
+
+TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
+  const fs::path dir = scratch("refuse");
+  const std::string example = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
+  ASSERT_EQ(run("run " + example + " -q -o " + (dir / "done").string()), 0);
+  EXPECT_EQ(run("run " + example + " --restart " + (dir / "done").string()), 2);
+  const std::string other = (dir / "other.yaml").string();
+  std::ofstream(other) << replace(read_text(example), "elements: 1}", "elements: 3}");
+  EXPECT_EQ(run("run " + other + " --restart " + (dir / "done").string()), 2);
+  EXPECT_EQ(run("run " + example + " --restart " + (dir / "nothing-here").string()), 2);
+}
