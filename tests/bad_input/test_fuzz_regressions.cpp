@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "../support/capture.hpp"
+#include "fit/inflation_data.hpp"
 #include "output/restart_file.hpp"
 
 namespace fs = std::filesystem;
@@ -40,6 +41,17 @@ TEST(FuzzRegressions, RestartInputsAreReadOrRefusedWithAnInputError) {
   for (const auto& f : files) {
     try {
       tunica::read_restart(f.string());
+    } catch (const tunica::InputError&) {
+    }
+  }
+}
+
+TEST(FuzzRegressions, FitDataInputsAreReadOrRefusedWithAnInputError) {
+  const auto files = inputs("fit_data");
+  EXPECT_GE(files.size(), 1u);
+  for (const auto& f : files) {
+    try {
+      tunica::read_inflation_data(f.string());
     } catch (const tunica::InputError&) {
     }
   }
