@@ -1,7 +1,13 @@
 #include "fit/fit_plot.hpp"
 
 #include <cstdlib>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>  // environ
+
 #include <filesystem>
+#include <vector>
 
 #include "output/atomic_file.hpp"
 
@@ -102,27 +108,27 @@ if __name__ == "__main__":
   return script;
 }
 
-namespace {
-
-/// 'text' for a POSIX shell.
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-}  // namespace
-
 std::string plot_fit(const std::string& dir, const std::string& title) {
   const std::string script = (std::filesystem::path(dir) / "plot_fit.py").string();
   write_file_atomically(script, fit_plot_script());
   const char* env = std::getenv("TUNICA_PYTHON");
   const std::string python = env && *env ? env : "/usr/bin/python3";
   if (!std::filesystem::exists(python)) return python + " not found (set TUNICA_PYTHON to a python3 with matplotlib)";
-  const std::string cmd = shell_quote(python) + " " + shell_quote(script) + " " + shell_quote(dir) + " " +
-                          shell_quote(title) + " 2>" + shell_quote(dir + "/plot_fit.log");
-  const int rc = std::system(cmd.c_str());
-  if (rc != 0) return "plot_fit.py failed (see " + dir + "/plot_fit.log; it needs matplotlib)";
+  // Run python directly (no shell), its stderr into plot_fit.log.
+  const std::string log = dir + "/plot_fit.log";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> args = {python, script, dir, title};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, python.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  if (spawned != 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return "plot_fit.py failed (see " + log + "; it needs matplotlib)";
   std::filesystem::remove(dir + "/plot_fit.log");
   return "";
 }
