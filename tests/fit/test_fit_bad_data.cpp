@@ -2,6 +2,7 @@
 // the message and that it names the file, the line and (where there is one) the column.
 // The last tests run the real `tunica fit` and expect exit code 2.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -184,7 +185,7 @@ Outcome run_cli(const std::string& args) {
 }  // namespace
 
 TEST(FitBadData, CommandLineExitsWithTwoAndNamesTheFile) {
-  const auto dir = std::filesystem::temp_directory_path() / "tunica-fit-bad-data";
+  const auto dir = std::filesystem::temp_directory_path() / ("tunica-fit-bad-data-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "data.csv").string();
   std::ofstream(path) << kSpecimen + kHeader + replace(kRows, "1.6,150", "-1.6,150");

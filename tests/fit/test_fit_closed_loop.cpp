@@ -4,6 +4,7 @@
 // mid-surface radius, its axial force the end reaction 2π r h σz (open ends), its
 // E_z the axial stretch; the specimen is R = 0.763 mm, H = 0.122 mm.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -26,7 +27,7 @@ const std::string kSpecimen = "{radius: 0.763 mm, thickness: 0.122 mm, ends: ope
 /// Runs the example deck once (into a temporary directory) and returns its history.csv.
 const std::string& fe_history() {
   static const std::string path = [] {
-    const fs::path dir = fs::temp_directory_path() / "tunica-fit-closed-loop";
+    const fs::path dir = fs::temp_directory_path() / ("tunica-fit-closed-loop-" + std::to_string(getpid()));
     fs::remove_all(dir);
     const std::string cmd = std::string(TUNICA_BINARY) + " run " + TUNICA_SOURCE_DIR +
                             "/examples/rat-aorta-inflation.yaml -q -o " + dir.string() + " 2>&1";
@@ -63,7 +64,7 @@ TEST(FitClosedLoop, PaperConstantsFromTheFeHistory) {
 // The same through the command line, with the inflation step only (λz = 1.6 fixed):
 // exit 0, and material.yaml is a deck block with the paper's constants.
 TEST(FitClosedLoop, CommandLineInflationStepOnly) {
-  const fs::path out = fs::temp_directory_path() / "tunica-fit-closed-loop-cli";
+  const fs::path out = fs::temp_directory_path() / ("tunica-fit-closed-loop-cli-" + std::to_string(getpid()));
   fs::remove_all(out);
   const std::string cmd = std::string(TUNICA_BINARY) + " fit " + fe_history() + " --model fung2d --specimen '" +
                           kSpecimen + "' --select step=2 --no-plot -q -o " + out.string() + " 2>&1";

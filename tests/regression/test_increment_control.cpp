@@ -4,6 +4,7 @@
 // the run cleanly with exit code 3, a message naming step, increment and
 // residual, and every converged increment kept in complete files.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <filesystem>
@@ -32,7 +33,7 @@ TEST(IncrementControl, CutBacksRecoverAndReachTheSameState) {
 
 TEST(IncrementControl, ALoadBeyondTheMaximumStopsCleanlyAndKeepsConvergedIncrements) {
   const std::string src = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml";
-  const fs::path dir = fs::temp_directory_path() / "tunica-increment-control";
+  const fs::path dir = fs::temp_directory_path() / ("tunica-increment-control-" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string deck = (dir / "over.yaml").string();
