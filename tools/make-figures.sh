@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# Regenerates docs/figures/ from the rat-aorta example: builds Tunica (Release, in build/)
-# if ./build/tunica is missing, runs examples/rat-aorta-inflation.yaml into
-# results/rat-aorta and plots it against the thin-tube closed form.
+# Regenerates docs/figures/ from the gallery examples: builds Tunica (Release, in build/)
+# if ./build/tunica is missing, then
+#  - runs examples/rat-aorta-inflation.yaml into results/rat-aorta and plots it
+#    against the thin-tube closed form;
+#  - runs examples/balloon-sphere.yaml into results/balloon-sphere, and copies of it
+#    with 10, 20, 40, 80 and 160 elements into results/balloon-sphere-convergence/elements-N,
+#    and plots them against the thin-sphere closed form.
 #   TUNICA=path/to/tunica   use that binary instead of ./build/tunica (no build)
 #   PYTHON=path/to/python3  interpreter with matplotlib and numpy (default: Debian's /usr/bin/python3)
 set -euo pipefail
@@ -14,5 +18,19 @@ else
   tunica=./build/tunica
   [ -x "$tunica" ] || bash tools/build.sh
 fi
+
 "$tunica" run examples/rat-aorta-inflation.yaml -o results/rat-aorta -q
 "$python" tools/figures/rat_aorta_figures.py results/rat-aorta docs/figures
+
+"$tunica" run examples/balloon-sphere.yaml -o results/balloon-sphere -q
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+conv=results/balloon-sphere-convergence
+rm -rf "$conv"
+for n in 10 20 40 80 160; do
+  deck="$tmp/balloon-sphere-$n.yaml"
+  sed "s/elements: 100}/elements: $n}/" examples/balloon-sphere.yaml >"$deck"
+  grep -q "elements: $n}" "$deck" || { echo "make-figures: could not set the element count in $deck" >&2; exit 1; }
+  "$tunica" run "$deck" -o "$conv/elements-$n" -q
+done
+"$python" tools/figures/balloon_figures.py results/balloon-sphere docs/figures "$conv"
