@@ -37,6 +37,7 @@ void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, 
 
 int run(const std::string& deck, std::string out, const std::string& restart, bool quiet) {
   const tunica::Model model = tunica::read_deck(deck);
+  if (out.empty() && restart.empty()) throw tunica::InputError({deck, 0, 0, ""}, "the output directory (-o) is empty");
   std::unique_ptr<tunica::RestartRecord> resume;
   if (!restart.empty()) {
     if (!out.empty() && std::filesystem::path(out) != std::filesystem::path(restart))
@@ -55,6 +56,9 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   const auto t0 = std::chrono::steady_clock::now();
   try {
     analysis.run(writer, resume ? &resume->checkpoint : nullptr);
+  } catch (const tunica::SolveError&) {
+    writer.write_newton_log();  // keep the failed attempts for diagnosis
+    throw;
   } catch (const tunica::Interrupted& e) {
     const int sig = tunica::stop_signal();
     std::fprintf(stderr, "tunica: interrupted by signal %d: %s; every converged increment is kept. Continue with:\n"

@@ -179,7 +179,8 @@ void read_parts(const DeckNode& deck, Model& m) {
     const Meridian points = gen->second.make(mp);
     const int first = m.num_nodes();
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (points[i](0) < 0) mesh.fail(fmt::format("node {} has a negative radius r = {:g}", i, points[i](0)));
+      if (points[i](0) < 0)
+        mesh.fail(fmt::format("node {} has a negative radius r = {:g} (angles without a unit are radians)", i, points[i](0)));
       m.X.push_back(points[i]);
       part.nodes.push_back(first + static_cast<int>(i));
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
+#include <map>
 
 namespace tunica {
 
@@ -52,11 +53,24 @@ std::vector<DeckNode> DeckNode::items() const {
   return out;
 }
 
-std::vector<std::pair<std::string, DeckNode>> DeckNode::entries() const {
-  if (!node_.IsMap()) fail("expected a map (key: value entries)");
-  std::vector<std::pair<std::string, DeckNode>> out;
+void DeckNode::expect_unique_keys() const {
+  std::map<std::string, int> seen;
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     if (!it->first.IsScalar()) DeckNode(it->first, file_, path_, where()).fail("map keys must be plain names");
+    const std::string k = it->first.Scalar();
+    const int line = it->first.Mark().is_null() ? 0 : it->first.Mark().line + 1;
+    auto [first, fresh] = seen.emplace(k, line);
+    if (!fresh)
+      DeckNode(it->first, file_, path_.empty() ? k : path_ + "." + k, where())
+          .fail("duplicate key '" + k + "' (first given on line " + std::to_string(first->second) + ")");
+  }
+}
+
+std::vector<std::pair<std::string, DeckNode>> DeckNode::entries() const {
+  if (!node_.IsMap()) fail("expected a map (key: value entries)");
+  expect_unique_keys();
+  std::vector<std::pair<std::string, DeckNode>> out;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string k = it->first.Scalar();
     out.emplace_back(k, DeckNode(it->second, file_, path_.empty() ? k : path_ + "." + k, where()));
   }
@@ -65,6 +79,7 @@ std::vector<std::pair<std::string, DeckNode>> DeckNode::entries() const {
 
 void DeckNode::expect_map_with_keys(const std::vector<std::string>& allowed) const {
   if (!node_.IsMap()) fail("expected a map (key: value entries)");
+  expect_unique_keys();
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string k = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {

@@ -38,7 +38,9 @@ public:
   std::vector<DeckNode> items() const;
   /// (key, value) pairs of a map, in file order.
   std::vector<std::pair<std::string, DeckNode>> entries() const;
-  /// Errors unless this is a map; errors on any key not in `allowed`.
+  /// Errors on a key given twice in this map (YAML parsers keep one silently).
+  void expect_unique_keys() const;
+  /// Errors unless this is a map; errors on any key not in `allowed` or given twice.
   void expect_map_with_keys(const std::vector<std::string>& allowed) const;
 
   /// Scalar as text; errors if not a scalar.

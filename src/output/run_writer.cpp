@@ -109,4 +109,6 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
 
 bool RunWriter::stop_requested() { return stop_signal() != 0; }
 
+void RunWriter::write_newton_log() { write_file_atomically(dir_ + "/newton.csv", newton_); }
+
 }  // namespace tunica

@@ -27,6 +27,8 @@ public:
   void on_increment(const Analysis& analysis, const IncrementInfo& info) override;
   /// True once SIGINT or SIGTERM has been received.
   bool stop_requested() override;
+  /// Writes newton.csv with the attempts since the last converged increment (for a run that stops).
+  void write_newton_log();
 
 private:
   const Model& model_;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace tunica {
 
@@ -81,12 +82,15 @@ void Analysis::run_step(AnalysisObserver& observer) {
         info.iterations = r.iterations;
         break;
       }
-      const std::string why = fmt::format("{} (relative residual {:.3e})", r.failure, r.last_relative_residual);
-      if (attempt >= step.solver.max_cutbacks) {
+      const std::string why = fmt::format("{} (last relative residual {:.3e})", r.failure, r.last_relative_residual);
+      // The increment may shrink to nominal / 2^max_cutbacks and no further, counting the
+      // halvings carried over from earlier increments: time always advances.
+      const double min_dt = nominal * std::ldexp(1.0, -step.solver.max_cutbacks);
+      if (attempt >= step.solver.max_cutbacks || 0.5 * dt < min_dt * (1 - 1e-12)) {
         throw SolveError(fmt::format(
-            "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence after {} cut-back(s). "
-            "Results of the converged increments are kept.",
-            info.step, step.name, info.increment, t, dt, why, step.solver.max_cutbacks));
+            "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
+            "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.",
+            info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks));
       }
       observer.on_cutback(info, why);
       dt *= 0.5;

@@ -61,7 +61,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
     }
     if (k > 0 && rec.residual > kDivergence * r0) {
       on_iteration(rec);
-      result.failure = fmt::format("diverging (relative residual {:.3e})", rec.relative_residual);
+      result.failure = "diverging";
       return result;
     }
     if (k == settings.max_iterations) {
@@ -78,6 +78,11 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
     }
     du = solver.solve(-Rf);
     rec.solve_seconds = seconds_since(t1);
+    if (!du.allFinite()) {
+      on_iteration(rec);
+      result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
+      return result;
+    }
     on_iteration(rec);
     if (k == 0) e1 = std::abs(du.dot(Rf));  // reference: first correction against the initial residual
     for (int i = 0; i < system.num_dofs(); ++i)

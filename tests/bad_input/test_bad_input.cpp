@@ -201,3 +201,19 @@ TEST(BadInput, DeckThatIsNotAMap) {
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.output.find(":1:1: a deck is a YAML map"), std::string::npos) << o.output;
 }
+
+TEST(BadInput, DuplicateKey) {
+  expect_error("duplicate-key", "    a2: 0.60558\n", "    a2: 0.60558\n    a2: 0.7\n", "materials.aorta.a2",
+               "duplicate key 'a2' (first given on line 13)", "    a2: 0.7");
+}
+
+TEST(BadInput, DuplicateNamedEntry) {
+  expect_error("duplicate-material", "parts:\n", "  aorta: {type: neo_hookean, mu: 1}\n\nparts:\n", "materials.aorta",
+               "duplicate key 'aorta' (first given on line 9)", "  aorta: {type: neo_hookean");
+}
+
+TEST(BadInput, EmptyOutputDirectory) {
+  const Outcome o = run_cli("run " + kExample + " -q -o ''");
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("the output directory (-o) is empty"), std::string::npos) << o.output;
+}
