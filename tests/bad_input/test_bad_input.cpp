@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "../support/capture.hpp"
+#include "../support/cli.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -17,21 +18,6 @@ namespace {
 
 const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
 
-struct Outcome {
-  int exit_code = -1;
-  std::string output;  // stdout + stderr
-};
-
-Outcome run_cli(const std::string& args) {
-  Outcome o;
-  const std::string cmd = std::string(TUNICA_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) o.output.append(buf, n);
-  const int status = pclose(p);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return o;
-}
 
 std::string write_deck(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "tunica-bad-input";

@@ -13,6 +13,7 @@
 #include <random>
 
 #include "../support/fd.hpp"
+#include "../support/material_from_yaml.hpp"
 #include "assembly/system.hpp"
 #include "io/deck.hpp"
 #include "loads/axisym_pressure.hpp"
@@ -21,15 +22,11 @@
 using namespace tunica;
 using tunica::test::fd_gradient;
 using tunica::test::fd_jacobian;
+using tunica::test::material_from_yaml;
 using tunica::test::relative_error;
 
 namespace {
 
-std::unique_ptr<MembraneMaterial> make(const std::string& yaml) {
-  const YAML::Node node = YAML::Load(yaml);
-  const auto& type = material_types().at(node["type"].as<std::string>());
-  return type.make(read_params(DeckNode(node, "test", "m"), type.spec, UnitSystem("mm", "N"), {"type"}));
-}
 
 const char* kMaterials[] = {
     "{type: fung, c: 0.061163, a1: 0.68238, a2: 0.60558, a4: 0.1067}",
@@ -61,7 +58,7 @@ void random_state(std::mt19937& rng, AxisymNodes& X, AxisymNodes& x) {
 TEST(AxisymElement, InternalForceIsTheGradientOfTheStoredEnergy) {
   std::mt19937 rng(3);
   for (const char* yaml : kMaterials) {
-    const auto m = make(yaml);
+    const auto m = material_from_yaml(yaml);
     for (int k = 0; k < 10; ++k) {
       AxisymNodes X, x;
       random_state(rng, X, x);
@@ -82,7 +79,7 @@ TEST(AxisymElement, InternalForceIsTheGradientOfTheStoredEnergy) {
 TEST(AxisymElement, TangentWithPressureLoadStiffnessMatchesFiniteDifferences) {
   std::mt19937 rng(4);
   for (const char* yaml : kMaterials) {
-    const auto m = make(yaml);
+    const auto m = material_from_yaml(yaml);
     for (double p : {0.0, 0.02, -0.01}) {
       for (int k = 0; k < 10; ++k) {
         AxisymNodes X, x;

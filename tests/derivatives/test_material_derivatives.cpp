@@ -8,6 +8,7 @@
 #include <random>
 
 #include "../support/fd.hpp"
+#include "../support/material_from_yaml.hpp"
 #include "io/deck.hpp"
 #include "materials/fung.hpp"
 #include "materials/membrane_material.hpp"
@@ -15,18 +16,11 @@
 using namespace tunica;
 using tunica::test::fd_gradient;
 using tunica::test::fd_jacobian;
+using tunica::test::material_from_yaml;
 using tunica::test::relative_error;
 
 namespace {
 
-/// A material built through the registry from deck text, as a user would.
-std::unique_ptr<MembraneMaterial> make(const std::string& yaml) {
-  const YAML::Node node = YAML::Load(yaml);
-  const DeckNode d(node, "test", "materials.m");
-  const auto& type = material_types().at(node["type"].as<std::string>());
-  const Params p = read_params(d, type.spec, UnitSystem("mm", "N"), {"type"});
-  return type.make(p);
-}
 
 const std::vector<std::pair<std::string, std::string>> kMaterials = {
     {"fung 2-D (paper)", "{type: fung, c: 0.061163, a1: 0.68238, a2: 0.60558, a4: 0.1067}"},
@@ -49,7 +43,7 @@ Eigen::Vector3d random_C(std::mt19937& rng) {
 TEST(MaterialDerivatives, EnergyGradientAndHessianMatchFiniteDifferences) {
   std::mt19937 rng(1);
   for (const auto& [label, yaml] : kMaterials) {
-    const auto m = make(yaml);
+    const auto m = material_from_yaml(yaml);
     for (int k = 0; k < 20; ++k) {
       const Eigen::Vector3d C = random_C(rng);
       const Eigen::Vector4d v(C(0), C(1), C(2), 1.0 / (C(0) * C(1) - C(2) * C(2)));
@@ -65,7 +59,7 @@ TEST(MaterialDerivatives, EnergyGradientAndHessianMatchFiniteDifferences) {
 TEST(MaterialDerivatives, StressIsTheDerivativeOfTheReducedEnergyAndTangentOfStress) {
   std::mt19937 rng(2);
   for (const auto& [label, yaml] : kMaterials) {
-    const auto m = make(yaml);
+    const auto m = material_from_yaml(yaml);
     for (int k = 0; k < 20; ++k) {
       const Eigen::Vector3d C = random_C(rng);
       const MembraneResponse r = membrane_response(*m, C);
@@ -87,7 +81,7 @@ TEST(MaterialDerivatives, StressIsTheDerivativeOfTheReducedEnergyAndTangentOfStr
 TEST(MaterialDerivatives, FungTwoDimensionalApproachMatchesThePaperClosedForms) {
   // THEORY §3: S1 = 2c(a1E1 + a4E2)e^Q, D11 = 2c[a1 + 2(a1E1 + a4E2)²]e^Q, ...
   const double c = 0.061163, a1 = 0.68238, a2 = 0.60558, a4 = 0.1067;
-  const auto m = make("{type: fung, c: 0.061163, a1: 0.68238, a2: 0.60558, a4: 0.1067}");
+  const auto m = material_from_yaml("{type: fung, c: 0.061163, a1: 0.68238, a2: 0.60558, a4: 0.1067}");
   for (double l1 : {0.87, 1.0, 1.3, 1.69})
     for (double l2 : {1.0, 1.6}) {
       const double E1 = 0.5 * (l1 * l1 - 1), E2 = 0.5 * (l2 * l2 - 1);
@@ -105,7 +99,7 @@ TEST(MaterialDerivatives, FungTwoDimensionalApproachMatchesThePaperClosedForms) 
 
 TEST(MaterialDerivatives, NeoHookeanEquibiaxialStressMatchesClosedForm) {
   // S_α = μ(1 − λ3²/λα²) with λ3 = 1/λ² (equibiaxial): σ = μ(λ² − λ⁻⁴) (THEORY §7 balloon).
-  const auto m = make("{type: neo_hookean, mu: 0.3}");
+  const auto m = material_from_yaml("{type: neo_hookean, mu: 0.3}");
   for (double l : {0.9, 1.2, 1.383, 2.0}) {
     const MembraneResponse r = membrane_response(*m, Eigen::Vector3d(l * l, l * l, 0));
     EXPECT_NEAR(l * l * r.S(0), 0.3 * (l * l - std::pow(l, -4)), 1e-14);

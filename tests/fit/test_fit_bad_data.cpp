@@ -11,8 +11,12 @@
 
 #include "core/errors.hpp"
 #include "fit/inflation_fit.hpp"
+#include "../support/cli.hpp"
 
 using namespace tunica;
+
+using tunica::test::Outcome;
+using tunica::test::run_cli;
 
 namespace {
 
@@ -166,21 +170,6 @@ TEST(FitBadData, RowSelection) {
 
 namespace {
 
-struct Outcome {
-  int exit_code = -1;
-  std::string output;
-};
-
-Outcome run_cli(const std::string& args) {
-  Outcome o;
-  const std::string cmd = std::string(TUNICA_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) o.output.append(buf, n);
-  const int status = pclose(p);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return o;
-}
 
 }  // namespace
 
