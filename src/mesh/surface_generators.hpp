@@ -1,0 +1,42 @@
+#pragma once
+// Generated surface meshes for examples and tests. Every generator makes one
+// surface named "surface" with outward normals (node order counterclockwise
+// seen from outside) and the node sets listed with it.
+#include <map>
+#include <string>
+
+#include "io/params.hpp"
+#include "mesh/surface_mesh.hpp"
+
+namespace tunica {
+
+/// Circular tube (cylinder) of the given radius about the z axis, from z = 0 to
+/// z = length, over the angle sector [0, sector] (2π: the closed tube, nodes
+/// shared across the seam), `around` elements around and `along` along, quads
+/// or triangles (each quad split along its diagonal, alternating direction).
+/// Node sets: "bottom" (z = 0), "top" (z = length), and for an open sector
+/// "start" (θ = 0) and "end" (θ = sector); also "x0" / "y0" for nodes on the
+/// planes x = 0 / y = 0 (sectors of 90°, 180°, ...).
+SurfaceMesh tube_mesh(double radius, double length, double sector, int around, int along, bool triangles);
+
+/// Whole sphere of the given radius about the origin: the six faces of a cube
+/// projected onto the sphere (quads, n × n per face, equal angles), or each
+/// quad split into two triangles. Node sets: "north" and "south" (the nodes at
+/// the poles ±z), "equator" (z = 0 for even n).
+SurfaceMesh sphere_mesh(double radius, int n, bool triangles);
+
+/// The octant x, y, z ≥ 0 of a sphere of the given radius: three quad patches
+/// from the cube projection (n × n each, equal angles) or split triangles.
+/// Node sets: "x0", "y0", "z0" (nodes on the symmetry planes), "pole" (the node on +z).
+SurfaceMesh octant_mesh(double radius, int n, bool triangles);
+
+/// A surface generator a deck can name (`mesh: {type: tube, ...}`).
+struct SurfaceGeneratorType {
+  ComponentSpec spec;
+  SurfaceMesh (*make)(const Params&);
+};
+
+/// All surface generators by deck name ("tube", "sphere", "octant").
+const std::map<std::string, SurfaceGeneratorType>& surface_generator_types();
+
+}  // namespace tunica

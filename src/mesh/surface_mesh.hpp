@@ -1,0 +1,28 @@
+#pragma once
+// Surface meshes for 3-D membrane parts: node positions, named surfaces made
+// of 3-node triangles and 4-node quadrilaterals (node order counterclockwise
+// about the surface normal), and named node sets (symmetry planes, edges,
+// physical curves and points). Built by the generators (tube, sphere, sphere
+// octant) or read from Gmsh files (gmsh_reader.hpp).
+#include <Eigen/Dense>
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tunica {
+
+struct SurfaceMesh {
+  struct Surface {
+    std::string name;
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<std::array<int, 4>> quads;
+    /// Optional per-element direction-1 vectors (empty, or one per triangle / quad).
+    std::vector<Eigen::Vector3d> triangle_direction, quad_direction;
+  };
+  std::vector<Eigen::Vector3d> nodes;
+  std::vector<Surface> surfaces;
+  std::map<std::string, std::vector<int>> node_sets;  ///< sorted, unique node indices
+};
+
+}  // namespace tunica
