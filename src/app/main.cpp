@@ -74,7 +74,7 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
 int check(const std::string& deck) {
   const tunica::Model model = tunica::read_deck(deck);
   int elements = 0;
-  for (const auto& p : model.parts) elements += static_cast<int>(p.elements.size());
+  for (const auto& p : model.parts) elements += p.num_elements();
   std::printf("%s: valid deck: %zu material(s), %zu part(s), %d node(s), %d element(s), %zu boundary set(s), "
               "%zu load(s), %zu step(s), %zu history column(s)\n",
               deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,

@@ -2,75 +2,182 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
+#include "elements/axisym_membrane.hpp"
 #include "loads/axisym_pressure.hpp"
+#include "loads/surface_pressure.hpp"
 
 namespace tunica {
 
-System::System(const Model& model) : model_(model) {
+System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) {
   const int n = model.num_dofs();
   std::vector<char> fixed(n, 0);
   for (const auto& b : model.boundaries)
     for (int node : model.node_sets[b.node_set].nodes)
-      for (int d : b.dofs) fixed[kDofsPerNode * node + d] = 1;
+      for (int d : b.dofs) fixed[dpn_ * node + d] = 1;
   eq_.assign(n, -1);
   for (int i = 0; i < n; ++i) {
     if (fixed[i]) prescribed_.push_back(i);
     else eq_[i] = num_free_++;
   }
 
-  // Pattern: every pair of free DOFs that share an element.
-  std::vector<Eigen::Triplet<double>> trip;
+  // Pattern: every pair of free DOFs whose nodes share an element, built column by
+  // column from the sorted node adjacency (no triplet list of (n·d)² per element).
+  std::vector<std::vector<int>> adjacent(model.num_nodes());
   for (const auto& part : model.parts)
-    for (const auto& e : part.elements)
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) {
-          const int i = eq_[kDofsPerNode * e[a / 2] + a % 2], j = eq_[kDofsPerNode * e[b / 2] + b % 2];
-          if (i >= 0 && j >= 0) trip.emplace_back(i, j, 0.0);
-        }
+    for (const auto& block : part.blocks) {
+      const int nen = nodes_per_element(block.kind);
+      for (int e = 0; e < block.size(); ++e) {
+        const int* en = block.element(e);
+        for (int a = 0; a < nen; ++a)
+          for (int b = 0; b < nen; ++b) adjacent[en[a]].push_back(en[b]);
+      }
+    }
+  std::vector<int> outer(num_free_ + 1, 0), inner;
+  for (int node = 0; node < model.num_nodes(); ++node) {
+    auto& adj = adjacent[node];
+    std::sort(adj.begin(), adj.end());
+    adj.erase(std::unique(adj.begin(), adj.end()), adj.end());
+    for (int c = 0; c < dpn_; ++c) {
+      const int j = eq_[dpn_ * node + c];
+      if (j < 0) continue;
+      // Equation numbers grow with the DOF index, so rows come out sorted.
+      for (int m : adj)
+        for (int r = 0; r < dpn_; ++r)
+          if (const int i = eq_[dpn_ * m + r]; i >= 0) inner.push_back(i);
+      outer[j + 1] = static_cast<int>(inner.size());
+    }
+    adj.clear();
+    adj.shrink_to_fit();
+  }
   pattern_.resize(num_free_, num_free_);
-  pattern_.setFromTriplets(trip.begin(), trip.end());
+  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
+  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
   pattern_.makeCompressed();
 
-  // Scatter positions: index of (i, j) in the CSC value array.
+  // Scatter positions: index of (i, j) in the CSC value array; reference data of 3-D elements.
   auto position = [&](int i, int j) {
     const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[j];
     const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[j + 1];
     return static_cast<int>(std::lower_bound(begin, end, i) - pattern_.innerIndexPtr());
   };
-  scatter_.resize(model.parts.size());
-  for (std::size_t p = 0; p < model.parts.size(); ++p)
-    for (const auto& e : model.parts[p].elements) {
-      std::array<int, 16> pos;
-      for (int a = 0; a < 4; ++a)
-        for (int b = 0; b < 4; ++b) {
-          const int i = eq_[kDofsPerNode * e[a / 2] + a % 2], j = eq_[kDofsPerNode * e[b / 2] + b % 2];
-          pos[4 * a + b] = (i >= 0 && j >= 0) ? position(i, j) : -1;
-        }
-      scatter_[p].push_back(pos);
+  blocks_.resize(model.parts.size());
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const Part& part = model.parts[p];
+    int first = 0;
+    for (const auto& block : part.blocks) {
+      Block data;
+      if (block.kind == ElementKind::tri3) data.tri = block_references<3>(model, part, block, first);
+      if (block.kind == ElementKind::quad4) data.quad = block_references<4>(model, part, block, first);
+      const int nd = nodes_per_element(block.kind) * dpn_;
+      data.scatter.resize(static_cast<std::size_t>(block.size()) * nd * nd);
+      int* pos = data.scatter.data();
+      for (int e = 0; e < block.size(); ++e) {
+        const int* en = block.element(e);
+        for (int a = 0; a < nd; ++a)
+          for (int b = 0; b < nd; ++b) {
+            const int i = eq_[dpn_ * en[a / dpn_] + a % dpn_], j = eq_[dpn_ * en[b / dpn_] + b % dpn_];
+            *pos++ = (i >= 0 && j >= 0) ? position(i, j) : -1;
+          }
+      }
+      first += block.size();
+      blocks_[p].push_back(std::move(data));
     }
+  }
 }
 
 void System::apply_boundary(const LoadState& loads, Eigen::VectorXd& u) const {
   for (std::size_t k = 0; k < model_.boundaries.size(); ++k) {
     const auto& b = model_.boundaries[k];
     for (int node : model_.node_sets[b.node_set].nodes)
-      for (int d : b.dofs) u(kDofsPerNode * node + d) = loads.boundary[k];
+      for (int d : b.dofs) u(dpn_ * node + d) = loads.boundary[k];
   }
 }
 
-AxisymNodes System::reference(const std::array<int, 2>& e) const {
-  AxisymNodes X;
-  X.col(0) = model_.X[e[0]];
-  X.col(1) = model_.X[e[1]];
-  return X;
+namespace {
+
+/// Reference and current nodes of a 2-node axisymmetric element: column a = (r_a, z_a).
+void axisym_nodes(const Model& m, const int* en, const Eigen::VectorXd& u, AxisymNodes& X, AxisymNodes& x) {
+  for (int a = 0; a < 2; ++a) {
+    X.col(a) = m.X[en[a]].head<2>();
+    x.col(a) = X.col(a) + u.segment<2>(2 * en[a]);
+  }
 }
 
-AxisymNodes System::current(const std::array<int, 2>& e, const Eigen::VectorXd& u) const {
-  AxisymNodes x = reference(e);
-  x.col(0) += u.segment<2>(kDofsPerNode * e[0]);
-  x.col(1) += u.segment<2>(kDofsPerNode * e[1]);
-  return x;
+template <int N>
+void surface_nodes(const Model& m, const int* en, const Eigen::VectorXd& u, SurfaceNodes<N>& x) {
+  for (int a = 0; a < N; ++a) x.col(a) = m.X[en[a]] + u.segment<3>(3 * en[a]);
+}
+
+/// Adds element vector and matrix into R and K's values.
+template <class V, class M>
+void scatter(const int* en, int dpn, const V& f, const M* Ke, const int* pos, Eigen::VectorXd& R, SparseMatrix* K) {
+  const int nd = static_cast<int>(f.size());
+  for (int a = 0; a < nd; ++a) R(dpn * en[a / dpn] + a % dpn) += f(a);
+  if (!K) return;
+  double* values = K->valuePtr();
+  for (int a = 0; a < nd; ++a)
+    for (int b = 0; b < nd; ++b)
+      if (const int k = pos[a * nd + b]; k >= 0) values[k] += (*Ke)(a, b);
+}
+
+}  // namespace
+
+void System::assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R,
+                             SparseMatrix* K, double& scale2) const {
+  const Part& part = model_.parts[p];
+  const ElementBlock& block = part.blocks[b];
+  const int* scatter_pos = blocks_[p][b].scatter.data();
+  Eigen::Vector4d f, fp;
+  Eigen::Matrix4d Ke, dfp;
+  AxisymNodes X, x;
+  for (int e = 0; e < block.size(); ++e) {
+    const int* en = block.element(e);
+    axisym_nodes(model_, en, u, X, x);
+    axisym_membrane(X, x, part.thickness, *part.material, f, K ? &Ke : nullptr);
+    scale2 += f.squaredNorm();
+    if (pressure != 0.0) {
+      axisym_pressure(x, pressure, fp, K ? &dfp : nullptr);
+      scale2 += fp.squaredNorm();
+      f -= fp;
+      if (K) Ke -= dfp;
+    }
+    if (K) scale2 += Ke.squaredNorm() * (X.col(1) - X.col(0)).squaredNorm();
+    scatter(en, 2, f, K ? &Ke : nullptr, scatter_pos + 16 * e, R, K);
+  }
+}
+
+template <int N>
+void System::assemble_surface(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R,
+                              SparseMatrix* K, double& scale2) const {
+  const Part& part = model_.parts[p];
+  const ElementBlock& block = part.blocks[b];
+  const Block& data = blocks_[p][b];
+  const int* scatter_pos = data.scatter.data();
+  ElementVector<N> f, fp;
+  ElementMatrix<N> Ke, dfp;
+  SurfaceNodes<N> x;
+  constexpr int nd = 3 * N;
+  for (int e = 0; e < block.size(); ++e) {
+    const int* en = block.element(e);
+    surface_nodes<N>(model_, en, u, x);
+    const MembraneReference<N>* ref;
+    if constexpr (N == 3) ref = &data.tri[e];
+    else ref = &data.quad[e];
+    membrane3d<N>(*ref, x, *part.material, f, K ? &Ke : nullptr);
+    scale2 += f.squaredNorm();
+    if (pressure != 0.0) {
+      surface_pressure<N>(x, pressure, fp, K ? &dfp : nullptr);
+      scale2 += fp.squaredNorm();
+      f -= fp;
+      if (K) Ke -= dfp;
+    }
+    if (K) scale2 += Ke.squaredNorm() * (model_.X[en[1]] - model_.X[en[0]]).squaredNorm();
+    scatter(en, 3, f, K ? &Ke : nullptr, scatter_pos + nd * nd * e, R, K);
+  }
 }
 
 void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
@@ -86,44 +193,124 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   for (std::size_t l = 0; l < model_.loads.size(); ++l)
     pressure[model_.loads[l].part] += model_.loads[l].sign * loads.pressure[l];
 
-  Eigen::Vector4d f, fp;
-  Eigen::Matrix4d Ke, dfp;
-  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
-    const Part& part = model_.parts[p];
-    for (std::size_t k = 0; k < part.elements.size(); ++k) {
-      const auto& e = part.elements[k];
-      const AxisymNodes x = current(e, u);
-      axisym_membrane(reference(e), x, part.thickness, *part.material, f, K ? &Ke : nullptr);
-      scale2 += f.squaredNorm();
-      if (pressure[p] != 0.0) {
-        axisym_pressure(x, pressure[p], fp, K ? &dfp : nullptr);
-        scale2 += fp.squaredNorm();
-        f -= fp;
-        if (K) Ke -= dfp;
-      }
-      for (int a = 0; a < 4; ++a) R(kDofsPerNode * e[a / 2] + a % 2) += f(a);
-      if (K) {
-        scale2 += Ke.squaredNorm() * (model_.X[e[1]] - model_.X[e[0]]).squaredNorm();
-        const auto& pos = scatter_[p][k];
-        double* values = K->valuePtr();
-        for (int ab = 0; ab < 16; ++ab)
-          if (pos[ab] >= 0) values[pos[ab]] += Ke(ab / 4, ab % 4);
+  for (std::size_t p = 0; p < model_.parts.size(); ++p)
+    for (std::size_t b = 0; b < model_.parts[p].blocks.size(); ++b) {
+      const int pi = static_cast<int>(p), bi = static_cast<int>(b);
+      switch (model_.parts[p].blocks[b].kind) {
+        case ElementKind::axisym2: assemble_axisym(pi, bi, u, pressure[p], R, K, scale2); break;
+        case ElementKind::tri3: assemble_surface<3>(pi, bi, u, pressure[p], R, K, scale2); break;
+        case ElementKind::quad4: assemble_surface<4>(pi, bi, u, pressure[p], R, K, scale2); break;
       }
     }
-  }
   if (force_scale) *force_scale = std::sqrt(scale2);
+}
+
+Eigen::VectorXd System::pressure_load(const Eigen::VectorXd& u, int l) const {
+  const PressureLoad& load = model_.loads[l];
+  const Part& part = model_.parts[load.part];
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(num_dofs());
+  for (const auto& block : part.blocks)
+    for (int e = 0; e < block.size(); ++e) {
+      const int* en = block.element(e);
+      if (block.kind == ElementKind::axisym2) {
+        AxisymNodes X, x;
+        Eigen::Vector4d f;
+        axisym_nodes(model_, en, u, X, x);
+        axisym_pressure(x, load.sign, f, nullptr);
+        for (int a = 0; a < 4; ++a) g(2 * en[a / 2] + a % 2) += f(a);
+      } else if (block.kind == ElementKind::tri3) {
+        SurfaceNodes<3> x;
+        ElementVector<3> f;
+        surface_nodes<3>(model_, en, u, x);
+        surface_pressure<3>(x, load.sign, f, nullptr);
+        for (int a = 0; a < 9; ++a) g(3 * en[a / 3] + a % 3) += f(a);
+      } else {
+        SurfaceNodes<4> x;
+        ElementVector<4> f;
+        surface_nodes<4>(model_, en, u, x);
+        surface_pressure<4>(x, load.sign, f, nullptr);
+        for (int a = 0; a < 12; ++a) g(3 * en[a / 3] + a % 3) += f(a);
+      }
+    }
+  return g;
+}
+
+double System::volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad) const {
+  const PressureLoad& load = model_.loads[l];
+  const Part& part = model_.parts[load.part];
+  if (grad) grad->setZero(num_dofs());
+  double V = 0;
+  for (const auto& block : part.blocks)
+    for (int e = 0; e < block.size(); ++e) {
+      const int* en = block.element(e);
+      if (block.kind == ElementKind::axisym2) {
+        // V_e = π ∫ r² dz = π Δz (r1² + r1 r2 + r2²)/3 for a straight segment.
+        AxisymNodes X, x;
+        axisym_nodes(model_, en, u, X, x);
+        const double r1 = x(0, 0), r2 = x(0, 1), dz = x(1, 1) - x(1, 0);
+        const double q = (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
+        V += std::numbers::pi * dz * q;
+        if (grad) {
+          (*grad)(2 * en[0]) += std::numbers::pi * dz * (2 * r1 + r2) / 3.0;
+          (*grad)(2 * en[1]) += std::numbers::pi * dz * (r1 + 2 * r2) / 3.0;
+          (*grad)(2 * en[0] + 1) -= std::numbers::pi * q;
+          (*grad)(2 * en[1] + 1) += std::numbers::pi * q;
+        }
+      } else if (block.kind == ElementKind::tri3) {
+        SurfaceNodes<3> x;
+        ElementVector<3> g;
+        surface_nodes<3>(model_, en, u, x);
+        V += enclosed_volume<3>(x, load.volume, grad ? &g : nullptr);
+        if (grad)
+          for (int a = 0; a < 9; ++a) (*grad)(3 * en[a / 3] + a % 3) += g(a);
+      } else {
+        SurfaceNodes<4> x;
+        ElementVector<4> g;
+        surface_nodes<4>(model_, en, u, x);
+        V += enclosed_volume<4>(x, load.volume, grad ? &g : nullptr);
+        if (grad)
+          for (int a = 0; a < 12; ++a) (*grad)(3 * en[a / 3] + a % 3) += g(a);
+      }
+    }
+  // The volume is on the side the pressure pushes away from: flipping the load flips the sign.
+  if (load.sign < 0) {
+    V = -V;
+    if (grad) *grad = -*grad;
+  }
+  return V;
 }
 
 std::vector<MembranePoint> System::points(const Eigen::VectorXd& u, int p) const {
   const Part& part = model_.parts[p];
   std::vector<MembranePoint> out;
-  out.reserve(2 * part.elements.size());
-  Eigen::Vector4d f;
-  std::array<MembranePoint, 2> pts;
-  for (const auto& e : part.elements) {
-    axisym_membrane(reference(e), current(e, u), part.thickness, *part.material, f, nullptr, &pts);
-    out.push_back(pts[0]);
-    out.push_back(pts[1]);
+  for (std::size_t b = 0; b < part.blocks.size(); ++b) {
+    const ElementBlock& block = part.blocks[b];
+    out.reserve(out.size() + static_cast<std::size_t>(block.size()) * points_per_element(block.kind));
+    for (int e = 0; e < block.size(); ++e) {
+      const int* en = block.element(e);
+      if (block.kind == ElementKind::axisym2) {
+        AxisymNodes X, x;
+        Eigen::Vector4d f;
+        std::array<MembranePoint, 2> pts;
+        axisym_nodes(model_, en, u, X, x);
+        axisym_membrane(X, x, part.thickness, *part.material, f, nullptr, &pts);
+        out.insert(out.end(), pts.begin(), pts.end());
+      } else if (block.kind == ElementKind::tri3) {
+        SurfaceNodes<3> x;
+        ElementVector<3> f;
+        std::array<MembranePoint, 1> pts;
+        surface_nodes<3>(model_, en, u, x);
+        membrane3d<3>(blocks_[p][b].tri[e], x, *part.material, f, nullptr, &pts);
+        out.insert(out.end(), pts.begin(), pts.end());
+      } else {
+        SurfaceNodes<4> x;
+        ElementVector<4> f;
+        std::array<MembranePoint, 4> pts;
+        surface_nodes<4>(model_, en, u, x);
+        membrane3d<4>(blocks_[p][b].quad[e], x, *part.material, f, nullptr, &pts);
+        out.insert(out.end(), pts.begin(), pts.end());
+      }
+    }
   }
   return out;
 }

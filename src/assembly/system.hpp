@@ -1,14 +1,16 @@
 #pragma once
 // The discrete system of a model: DOF numbering with prescribed DOFs removed,
-// the sparsity pattern of the free-DOF tangent computed once, each element's
-// scatter positions into it, and the assembly of the residual
-// R = f_int − f_ext (all DOFs, so reactions can be read) and of K = ∂R/∂u
-// (free DOFs only) from the element and load kernels.
+// the sparsity pattern of the free-DOF tangent computed once (from the node
+// adjacency of the elements), each element's scatter positions into it, the
+// reference data of the 3-D elements computed once, and the assembly of the
+// residual R = f_int − f_ext (all DOFs, so reactions can be read) and of
+// K = ∂R/∂u (free DOFs only) from the element and load kernels.
 #include <Eigen/Sparse>
 #include <array>
 #include <vector>
 
-#include "elements/axisym_membrane.hpp"
+#include "assembly/references.hpp"
+#include "elements/membrane_point.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
@@ -19,6 +21,7 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 struct LoadState {
   std::vector<double> boundary;  ///< per Model::boundaries
   std::vector<double> pressure;  ///< per Model::loads
+  std::vector<double> volume;    ///< per Model::loads: enclosed volume at the last converged state
 };
 
 class System {
@@ -39,22 +42,38 @@ public:
   /// stiffness × element size that bounds round-off of stresses computed near zero strain.
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                 double* force_scale = nullptr) const;
+  /// External force per unit pressure of load `l` at u (all DOFs): ∂f_ext/∂p.
+  Eigen::VectorXd pressure_load(const Eigen::VectorXd& u, int l) const;
+  /// Enclosed volume of the surface of load `l` at u (see surface_pressure.hpp; axisymmetric:
+  /// V = π ∫ r² dz along the meridian) and, if `grad` is given, ∂V/∂u (all DOFs).
+  double volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad = nullptr) const;
   /// A zero matrix with the tangent's pattern.
   const SparseMatrix& pattern() const { return pattern_; }
-  /// Gauss-point states of every element of a part (2 per element).
+  /// Gauss-point states of every element of a part, block by block, element by element.
   std::vector<MembranePoint> points(const Eigen::VectorXd& u, int part) const;
 
 private:
-  AxisymNodes reference(const std::array<int, 2>& e) const;
-  AxisymNodes current(const std::array<int, 2>& e, const Eigen::VectorXd& u) const;
+  struct Block {
+    std::vector<MembraneReference<3>> tri;
+    std::vector<MembraneReference<4>> quad;
+    std::vector<int> scatter;  ///< per element, (n·d)² positions in K's value array (−1: not free-free)
+  };
+  template <int N>
+  void assemble_surface(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
+                        double& scale2) const;
+  void assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
+                       double& scale2) const;
 
   const Model& model_;
+  int dpn_ = 2;
   std::vector<int> eq_;
   std::vector<int> prescribed_;
   int num_free_ = 0;
   SparseMatrix pattern_;
-  /// Per part, per element: the 16 positions in K's value array (−1 = not a free-free entry).
-  std::vector<std::vector<std::array<int, 16>>> scatter_;
+  std::vector<std::vector<Block>> blocks_;  ///< per part, per block
 };
+
+/// Gauss points per element of a kind.
+constexpr int points_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 1 : 4; }
 
 }  // namespace tunica

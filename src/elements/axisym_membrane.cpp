@@ -52,10 +52,18 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
       p.R = R;
       p.r = r;
       p.z = N0 * x(1, 0) + N1 * x(1, 1);
+      p.X = Eigen::Vector3d(R, N0 * X(1, 0) + N1 * X(1, 1), 0.0);
+      p.x = Eigen::Vector3d(r, p.z, 0.0);
       p.lambda = Eigen::Vector3d(r / R, std::sqrt(l2 / L2), std::sqrt(m.C33));
-      p.E = Eigen::Vector2d(Et, Es);
-      p.S = m.S.head<2>();
+      p.E = Eigen::Vector3d(Et, Es, 0.0);
+      p.S = Eigen::Vector3d(m.S(0), m.S(1), 0.0);
       p.sigma = Eigen::Vector2d(p.lambda(0) * p.lambda(0) * m.S(0), p.lambda(1) * p.lambda(1) * m.S(1));
+      p.sigma_principal = Eigen::Vector2d(p.sigma.maxCoeff(), p.sigma.minCoeff());
+      // Global axes of the meridian plane θ = 0: x = r, y = hoop, z = z.
+      const Eigen::Vector3d t(dx(0) / std::sqrt(l2), 0.0, dx(1) / std::sqrt(l2));
+      p.e1 = Eigen::Vector3d::UnitY();
+      p.e2 = Eigen::Vector3d(dX(0) / L, 0.0, dX(1) / L);
+      p.cauchy = p.sigma(0) * p.e1 * p.e1.transpose() + p.sigma(1) * t * t.transpose();
       p.thickness = p.lambda(2) * H;
       p.W = m.W;
       p.weight = w;

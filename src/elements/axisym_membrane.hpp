@@ -8,24 +8,13 @@
 #include <Eigen/Dense>
 #include <array>
 
+#include "elements/membrane_point.hpp"
 #include "materials/membrane_material.hpp"
 
 namespace tunica {
 
 /// Nodal coordinates of a 2-node axisymmetric element: column a = (r_a, z_a).
 using AxisymNodes = Eigen::Matrix2d;
-
-/// The state at one Gauss point, for output.
-struct MembranePoint {
-  double R = 0, r = 0, z = 0;      ///< reference and current radius, current axial position
-  Eigen::Vector3d lambda;          ///< stretches (λ1 hoop, λ2 meridional, λ3 thickness)
-  Eigen::Vector2d E;               ///< Green–Lagrange strains (E1, E2)
-  Eigen::Vector2d S;               ///< 2nd Piola–Kirchhoff stresses (S1, S2)
-  Eigen::Vector2d sigma;           ///< Cauchy stresses σ_α = λ_α² S_α
-  double thickness = 0;            ///< current thickness h = λ3 H
-  double W = 0;                    ///< strain energy per reference volume Ŵ
-  double weight = 0;               ///< quadrature weight × reference volume element (Σ W·weight = stored energy)
-};
 
 /// Internal force f (4) and, if K is given, the tangent K = ∂f/∂u (4×4, material
 /// + geometric) of one element with reference nodes X, current nodes x and

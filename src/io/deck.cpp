@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "io/deck_limits.hpp"
+#include "io/deck_surface_parts.hpp"
 #include "mesh/meridian.hpp"
 
 namespace tunica {
@@ -30,20 +31,24 @@ const ComponentSpec& units_spec() {
 const ComponentSpec& part_spec() {
   static const ComponentSpec s{
       "parts", "",
-      "A body: its element type, material, reference thickness and generated meridian mesh. "
-      "Every part gets the node sets `<part>.start`, `<part>.end` and `<part>.all`.",
-      {required(one_of(text("element", "element type"), {"axisymmetric_membrane"})),
+      "A body: its element type, material, reference thickness, mesh and (3-D) material frame. "
+      "`axisymmetric_membrane` parts (2-node elements on a meridian in the (r, z) plane) get the node sets "
+      "`<part>.start`, `<part>.end` and `<part>.all`; `membrane` parts (3-node triangles and 4-node "
+      "quadrilaterals in 3-D) get `<part>.all` and their generator's sets as `<part>.<set>`, or the "
+      "physical curves and points of their Gmsh file. A deck's parts are all axisymmetric or all 3-D.",
+      {required(one_of(text("element", "element type"), {"axisymmetric_membrane", "membrane"})),
        required(text("material", "name of a material in `materials`")),
        required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
-       required(structured("mesh", "map", "`type: line` or `type: arc` and that generator's keys (see Meshes)"))}};
+       required(structured("mesh", "map", "`type:` a generator (see Meshes) or `gmsh`, and its keys")),
+       structured("frame", "map", "3-D parts: the material frame rule (see `parts.frame`)")}};
   return s;
 }
 
 const ComponentSpec& node_set_spec() {
   static const ComponentSpec s{
       "node_sets", "",
-      "A named set of nodes: the `nodes` of a `part` (`start`, `end`, `all`, or a list of indices along "
-      "its meridian, 0 = start).",
+      "A named set of nodes: the `nodes` of a `part` (`start`, `end` (axisymmetric), `all`, or a list of "
+      "indices into the part's nodes: along the meridian, 0 = start; 3-D: in increasing global order).",
       {required(text("part", "name of a part")), required(structured("nodes", "text or list", "`start`, `end`, `all` or a list of node indices"))}};
   return s;
 }
@@ -54,7 +59,7 @@ const ComponentSpec& boundary_spec() {
       "A prescribed displacement of some DOFs of a node set: 0 until a step sets it, then ramped "
       "linearly within the step to the value the step's `set` gives, and held after.",
       {required(text("node_set", "name of a node set")),
-       required(structured("dofs", "list", "DOFs among `r` and `z`, e.g. `[z]`"))}};
+       required(structured("dofs", "list", "DOFs among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`"))}};
   return s;
 }
 
@@ -62,11 +67,19 @@ const ComponentSpec& load_spec() {
   static const ComponentSpec s{
       "loads", "pressure",
       "Follower pressure on the current surface of a part, with its consistent (nonsymmetric) load "
-      "stiffness. Positive pressure acts along n = (dz/ds, −dr/ds), s running along the meridian in "
-      "node order: outwards for a tube meshed towards +z or a balloon meshed from the lower to the "
-      "upper pole. Its magnitude is 0 until a step sets it and is ramped like a boundary value.",
+      "stiffness. Axisymmetric: positive pressure acts along n = (dz/ds, −dr/ds), s running along the "
+      "meridian in node order: outwards for a tube meshed towards +z or a balloon meshed from the lower "
+      "to the upper pole. 3-D: along the element normal g1 × g2 (outwards on the generated meshes). Its "
+      "magnitude is 0 until a step sets it and is ramped like a boundary value, or it is the unknown of "
+      "a volume-controlled step. The enclosed volume (history quantity `volume`) is ⅓∫(x − p₀)·n dA "
+      "(closed surfaces, or closed by planes through p₀ such as symmetry planes) or, with "
+      "`volume_axis`, ½∫(x − p₀)⊥·n dA about that axis through p₀ (tubes closed by end planes normal to "
+      "the axis); axisymmetric: π∫r² dz.",
       {required(one_of(text("type", "load type"), {"pressure"})), required(text("part", "name of a part")),
-       with_default(boolean("flip", "act along −n instead"), "false")}};
+       with_default(boolean("flip", "act along −n instead"), "false"),
+       with_default(numbers("volume_point", Dimension::length, 3, "3-D: the point p₀ of the volume measure"),
+                    "[0, 0, 0]"),
+       numbers("volume_axis", Dimension::dimensionless, 3, "3-D: measure the volume about this axis through p₀")}};
   return s;
 }
 
@@ -94,6 +107,10 @@ const ComponentSpec& step_spec() {
       {with_default(text("name", "name shown in progress and output"), "step"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
        structured("set", "map", "boundary or load names → their values at the end of the step"),
+       structured("volume_control", "map",
+                  "`{load: <pressure load>, volume: <target>}`: that load's pressure becomes an unknown and "
+                  "the enclosed volume of its surface is ramped from its value at the start of the step to "
+                  "the target (follows a pressure maximum)"),
        structured("solver", "map", "overrides of the top-level `solver` keys for this step")}};
   return s;
 }
@@ -117,7 +134,7 @@ const ComponentSpec& output_spec() {
       "output", "", "What a run writes besides newton.csv.",
       {structured("history", "list", "history columns (see `output.history`)"),
        with_default(boolean("vtk", "write ParaView files (.vtu per increment, .pvd series)"), "true"),
-       with_default(at_most(at_least(integer("vtk_segments", "hoop subdivisions of the revolved surface"), 3), 1000),
+       with_default(at_most(at_least(integer("vtk_segments", "axisymmetric: hoop subdivisions of the revolved surface"), 3), 1000),
                     "48")}};
   return s;
 }
@@ -153,9 +170,45 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
 
 std::vector<std::string> names(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
 
+void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
+  const DeckNode mesh = node.required("mesh");
+  if (!mesh.is_map()) mesh.fail("expected a map with `type: line` or `type: arc`");
+  const std::string type = mesh.required("type").as_string();
+  auto gen = meridian_types().find(type);
+  if (gen == meridian_types().end())
+    mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc)");
+  if (node.has("frame")) node["frame"].fail("an axisymmetric part's frame is fixed (1 = hoop, 2 = meridian)");
+  const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
+  if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
+    mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
+  const Meridian points = gen->second.make(mp);
+  const int first = m.num_nodes();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i](0) < 0)
+      mesh.fail(fmt::format("node {} has a negative radius r = {:g} (angles without a unit are radians)", i, points[i](0)));
+    m.X.push_back(Eigen::Vector3d(points[i](0), points[i](1), 0.0));
+    part.nodes.push_back(first + static_cast<int>(i));
+  }
+  ElementBlock block;
+  block.kind = ElementKind::axisym2;
+  for (std::size_t e = 0; e + 1 < points.size(); ++e) {
+    const double L = (points[e + 1] - points[e]).norm();
+    if (!(L > 0)) mesh.fail(fmt::format("element {} has zero length", e));
+    if (points[e](0) == 0 && points[e + 1](0) == 0) mesh.fail(fmt::format("element {} lies on the axis (r = 0)", e));
+    block.nodes.push_back(first + static_cast<int>(e));
+    block.nodes.push_back(first + static_cast<int>(e) + 1);
+  }
+  part.blocks.push_back(std::move(block));
+  m.node_sets.push_back({part.name + ".start", {part.nodes.front()}});
+  m.node_sets.push_back({part.name + ".end", {part.nodes.back()}});
+  m.node_sets.push_back({part.name + ".all", part.nodes});
+}
+
 void read_parts(const DeckNode& deck, Model& m) {
   const DeckNode parts = deck.required("parts");
   if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
+  SurfaceMeshCache cache;
+  bool first = true;
   for (const auto& [name, node] : parts.entries()) {
     const Params p = read_params(node, part_spec(), m.units);
     Part part;
@@ -167,34 +220,17 @@ void read_parts(const DeckNode& deck, Model& m) {
     if (mat == m.materials.end())
       p.fail("material", "undefined material '" + part.material_name + "' (not in `materials`)");
     part.material = mat->second.get();
-
-    const DeckNode mesh = node.required("mesh");
-    if (!mesh.is_map()) mesh.fail("expected a map with `type: line` or `type: arc`");
-    const std::string type = mesh.required("type").as_string();
-    auto gen = meridian_types().find(type);
-    if (gen == meridian_types().end()) mesh["type"].fail("unknown mesh type '" + type + "' (known: line, arc)");
-    const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
-    if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
-      mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
-    const Meridian points = gen->second.make(mp);
-    const int first = m.num_nodes();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (points[i](0) < 0)
-        mesh.fail(fmt::format("node {} has a negative radius r = {:g} (angles without a unit are radians)", i, points[i](0)));
-      m.X.push_back(points[i]);
-      part.nodes.push_back(first + static_cast<int>(i));
-    }
-    for (std::size_t e = 0; e + 1 < points.size(); ++e) {
-      const double L = (points[e + 1] - points[e]).norm();
-      if (!(L > 0)) mesh.fail(fmt::format("element {} has zero length", e));
-      if (points[e](0) == 0 && points[e + 1](0) == 0) mesh.fail(fmt::format("element {} lies on the axis (r = 0)", e));
-      part.elements.push_back({first + static_cast<int>(e), first + static_cast<int>(e) + 1});
-    }
-    m.node_sets.push_back({name + ".start", {part.nodes.front()}});
-    m.node_sets.push_back({name + ".end", {part.nodes.back()}});
-    m.node_sets.push_back({name + ".all", part.nodes});
+    const Geometry g = part.element == "membrane" ? Geometry::three_d : Geometry::axisymmetric;
+    if (first) m.geometry = g;
+    else if (g != m.geometry)
+      p.fail("element", "axisymmetric and 3-D parts cannot be mixed in one deck (the first part is " +
+                            m.parts.front().element + ")");
+    first = false;
+    if (g == Geometry::axisymmetric) read_meridian_part(node, part, m);
+    else read_surface_part(node, part, m, cache);
     m.parts.push_back(std::move(part));
   }
+  if (m.geometry == Geometry::three_d) finish_surface_parts(parts, m);
 }
 
 void read_node_sets(const DeckNode& deck, Model& m) {
@@ -207,12 +243,13 @@ void read_node_sets(const DeckNode& deck, Model& m) {
     const auto& pn = m.parts[part].nodes;
     NodeSet set{name, {}};
     const DeckNode nodes = node.required("nodes");
+    const bool axisym = m.geometry == Geometry::axisymmetric;
     if (nodes.is_scalar()) {
       const std::string w = nodes.as_string();
-      if (w == "start") set.nodes = {pn.front()};
-      else if (w == "end") set.nodes = {pn.back()};
+      if (w == "start" && axisym) set.nodes = {pn.front()};
+      else if (w == "end" && axisym) set.nodes = {pn.back()};
       else if (w == "all") set.nodes = pn;
-      else nodes.fail("expected start, end, all or a list of node indices, got '" + w + "'");
+      else nodes.fail(std::string("expected ") + (axisym ? "start, end, " : "") + "all or a list of node indices, got '" + w + "'");
     } else {
       for (const auto& item : nodes.items()) {
         const long i = item.as_integer();
@@ -238,20 +275,23 @@ void read_boundaries(const DeckNode& deck, Model& m) {
     Boundary b{name, node_set_ref(p, "node_set", m), {}, node.where()};
     const DeckNode dofs = node.required("dofs");
     const std::vector<DeckNode> list = dofs.is_sequence() ? dofs.items() : std::vector<DeckNode>{dofs};
+    const std::vector<std::string> dof_names = m.dof_names();
     for (const auto& d : list) {
       const std::string s = d.as_string();
-      if (s == "r") b.dofs.push_back(0);
-      else if (s == "z") b.dofs.push_back(1);
-      else d.fail("unknown DOF '" + s + "' (axisymmetric DOFs are r and z)");
+      auto it = std::find(dof_names.begin(), dof_names.end(), s);
+      if (it == dof_names.end())
+        d.fail("unknown DOF '" + s + "' (" +
+               (m.geometry == Geometry::axisymmetric ? "axisymmetric DOFs are r and z" : "3-D DOFs are x, y and z") + ")");
+      b.dofs.push_back(static_cast<int>(it - dof_names.begin()));
     }
     m.boundaries.push_back(std::move(b));
   }
   // A DOF may be prescribed by one boundary only.
-  std::map<int, std::string> owner;
+  std::map<long, std::string> owner;
   for (const auto& b : m.boundaries)
     for (int n : m.node_sets[b.node_set].nodes)
       for (int d : b.dofs) {
-        auto [it, fresh] = owner.emplace(kDofsPerNode * n + d, b.name);
+        auto [it, fresh] = owner.emplace(static_cast<long>(m.dofs_per_node()) * n + d, b.name);
         if (!fresh && it->second != b.name)
           throw InputError(b.where, fmt::format("boundary '{}' prescribes a DOF that boundary '{}' already prescribes",
                                                 b.name, it->second));
@@ -266,7 +306,20 @@ void read_loads(const DeckNode& deck, Model& m) {
     const Params p = read_params(node, load_spec(), m.units);
     const int part = m.find_part(p.text("part"));
     if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
-    m.loads.push_back({name, part, p.boolean("flip") ? -1.0 : 1.0, node.where()});
+    PressureLoad load{name, part, p.boolean("flip") ? -1.0 : 1.0, {}, node.where()};
+    const auto& vp = p.numbers("volume_point");
+    load.volume.point = Eigen::Vector3d(vp[0], vp[1], vp[2]);
+    if (p.has("volume_axis")) {
+      const auto& a = p.numbers("volume_axis");
+      load.volume.about_axis = true;
+      load.volume.axis = Eigen::Vector3d(a[0], a[1], a[2]);
+      if (!(load.volume.axis.norm() > 0)) p.fail("volume_axis", "the axis direction must not be zero");
+      load.volume.axis.normalize();
+    }
+    if (m.geometry == Geometry::axisymmetric && (node.has("volume_point") || node.has("volume_axis")))
+      p.fail(node.has("volume_point") ? "volume_point" : "volume_axis",
+             "an axisymmetric volume is always measured about the z axis");
+    m.loads.push_back(std::move(load));
   }
 }
 
@@ -288,6 +341,17 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
         if (!is_boundary && !is_load) value.fail("'" + target + "' is neither a boundary nor a load");
         s.targets[target] = read_quantity(value, is_boundary ? Dimension::length : Dimension::pressure, m.units);
       }
+    }
+    if (node.has("volume_control")) {
+      const DeckNode vc = node["volume_control"];
+      vc.expect_map_with_keys({"load", "volume"});
+      const std::string load = vc.required("load").as_string();
+      auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == load; });
+      if (it == m.loads.end()) vc["load"].fail("undefined pressure load '" + load + "'");
+      if (s.targets.count(load)) vc["load"].fail("load '" + load + "' is also set in `set`: a volume-controlled pressure is an unknown");
+      s.volume_control.load = static_cast<int>(it - m.loads.begin());
+      s.volume_control.target = read_quantity(vc.required("volume"), Dimension::volume, m.units);
+      if (!(s.volume_control.target > 0)) vc["volume"].fail("the target volume must be positive");
     }
     m.steps.push_back(std::move(s));
   }
@@ -313,6 +377,14 @@ void read_output(const DeckNode& deck, Model& m) {
       h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")");
     }
     r.dim = q->dim;
+    {
+      const char last = r.quantity.back();
+      const bool node_dof = q->target == "node_set";
+      if (node_dof && m.geometry == Geometry::axisymmetric && (last == 'x' || last == 'y'))
+        h.fail("quantity", "'" + r.quantity + "' is a 3-D quantity; axisymmetric nodes have r and z");
+      if (node_dof && m.geometry == Geometry::three_d && last == 'r')
+        h.fail("quantity", "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
+    }
     for (const char* key : {"part", "node_set", "load"}) {
       if (h.has(key) && q->target != key)
         h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, q->target.empty() ? "no set" : "a " + q->target));
@@ -371,29 +443,40 @@ const std::vector<HistoryQuantity>& history_quantities() {
   static const std::vector<HistoryQuantity> q = {
       {"time", "", Dimension::dimensionless, "analysis time: step number − 1 + fraction of the step done"},
       {"pressure", "load", Dimension::pressure, "current magnitude of a pressure load"},
-      {"lambda_1", "part", Dimension::dimensionless, "stretch in direction 1 (hoop), λθ = r/R"},
-      {"lambda_2", "part", Dimension::dimensionless, "stretch in direction 2 (meridian), λs = ℓ/L"},
-      {"lambda_3", "part", Dimension::dimensionless, "thickness stretch λ3 = 1/(λ1 λ2)"},
-      {"E_1", "part", Dimension::dimensionless, "Green–Lagrange strain E1 = ½(λ1² − 1)"},
-      {"E_2", "part", Dimension::dimensionless, "Green–Lagrange strain E2 = ½(λ2² − 1)"},
-      {"S_1", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S1"},
-      {"S_2", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S2"},
-      {"sigma_1", "part", Dimension::pressure, "Cauchy stress σ1 = λ1² S1"},
-      {"sigma_2", "part", Dimension::pressure, "Cauchy stress σ2 = λ2² S2"},
+      {"volume", "load", Dimension::volume, "enclosed volume of the load's surface (see `loads`)"},
+      {"lambda_1", "part", Dimension::dimensionless, "stretch in direction 1 (axisymmetric: hoop, λθ = r/R), √C11"},
+      {"lambda_2", "part", Dimension::dimensionless, "stretch in direction 2 (axisymmetric: meridian, λs = ℓ/L), √C22"},
+      {"lambda_3", "part", Dimension::dimensionless, "thickness stretch λ3 = 1/√det C"},
+      {"E_1", "part", Dimension::dimensionless, "Green–Lagrange strain E11 = ½(C11 − 1)"},
+      {"E_2", "part", Dimension::dimensionless, "Green–Lagrange strain E22 = ½(C22 − 1)"},
+      {"E_12", "part", Dimension::dimensionless, "Green–Lagrange shear strain E12 = ½ C12 (0 in axisymmetry)"},
+      {"S_1", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S11"},
+      {"S_2", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S22"},
+      {"S_12", "part", Dimension::pressure, "2nd Piola–Kirchhoff shear stress S12"},
+      {"sigma_1", "part", Dimension::pressure, "Cauchy stress along the convected direction 1 (no shear: λ1² S11)"},
+      {"sigma_2", "part", Dimension::pressure, "Cauchy stress along the convected direction 2 (no shear: λ2² S22)"},
+      {"sigma_max", "part", Dimension::pressure, "maximum in-plane principal Cauchy stress"},
+      {"sigma_min", "part", Dimension::pressure, "minimum in-plane principal Cauchy stress"},
       {"thickness", "part", Dimension::length, "current thickness h = λ3 H"},
-      {"radius", "part", Dimension::length, "current mid-surface radius r"},
-      {"position_r", "node_set", Dimension::length, "current r of the nodes"},
+      {"radius", "part", Dimension::length, "current distance of the Gauss points from the z axis"},
+      {"position_r", "node_set", Dimension::length, "axisymmetric: current r of the nodes"},
+      {"position_x", "node_set", Dimension::length, "3-D: current x of the nodes"},
+      {"position_y", "node_set", Dimension::length, "3-D: current y of the nodes"},
       {"position_z", "node_set", Dimension::length, "current z of the nodes"},
-      {"displacement_r", "node_set", Dimension::length, "displacement u_r of the nodes"},
+      {"displacement_r", "node_set", Dimension::length, "axisymmetric: displacement u_r of the nodes"},
+      {"displacement_x", "node_set", Dimension::length, "3-D: displacement u_x of the nodes"},
+      {"displacement_y", "node_set", Dimension::length, "3-D: displacement u_y of the nodes"},
       {"displacement_z", "node_set", Dimension::length, "displacement u_z of the nodes"},
-      {"reaction_r", "node_set", Dimension::force, "reaction force on prescribed r DOFs (whole circumference)"},
-      {"reaction_z", "node_set", Dimension::force, "reaction force on prescribed z DOFs (whole circumference)"},
+      {"reaction_r", "node_set", Dimension::force, "axisymmetric: reaction on prescribed r DOFs (whole circumference)"},
+      {"reaction_x", "node_set", Dimension::force, "3-D: reaction force on prescribed x DOFs"},
+      {"reaction_y", "node_set", Dimension::force, "3-D: reaction force on prescribed y DOFs"},
+      {"reaction_z", "node_set", Dimension::force, "reaction force on prescribed z DOFs (axisymmetric: whole circumference)"},
   };
   return q;
 }
 
 std::vector<ComponentSpec> deck_sections() {
-  return {units_spec(), part_spec(), node_set_spec(), boundary_spec(), load_spec(),
+  return {units_spec(), part_spec(), frame_spec(), node_set_spec(), boundary_spec(), load_spec(),
           solver_spec(), step_spec(), output_spec(), history_spec()};
 }
 

@@ -4,7 +4,9 @@
 
 #include "io/deck.hpp"
 #include "materials/membrane_material.hpp"
+#include "io/deck_surface_parts.hpp"
 #include "mesh/meridian.hpp"
+#include "mesh/surface_generators.hpp"
 
 namespace tunica {
 
@@ -25,9 +27,13 @@ std::string deck_reference_markdown() {
     if (sec.section == "output.history") s += "A list of entries with these keys:\n\n";
     s += params_markdown(sec) + "\n";
     if (sec.section == "parts") {
-      s += "### Meshes (`parts.<name>.mesh`)\n\n";
+      s += "### Meshes (`parts.<name>.mesh`)\n\nAxisymmetric parts (`element: axisymmetric_membrane`):\n\n";
       for (const auto& [name, t] : meridian_types())
         s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
+      s += "3-D parts (`element: membrane`):\n\n";
+      for (const auto& [name, t] : surface_generator_types())
+        s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
+      s += fmt::format("#### `type: gmsh`\n\n{}\n\n{}\n", gmsh_mesh_spec().doc, params_markdown(gmsh_mesh_spec()));
     }
     if (sec.section == "output.history") {
       s += "### History quantities\n\n| quantity | needs | dimension | meaning |\n|---|---|---|---|\n";

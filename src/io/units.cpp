@@ -60,6 +60,7 @@ const char* dimension_name(Dimension d) {
     case Dimension::force: return "force";
     case Dimension::pressure: return "pressure (stress)";
     case Dimension::angle: return "angle";
+    case Dimension::volume: return "volume";
   }
   return "?";
 }
@@ -76,6 +77,7 @@ std::string UnitSystem::internal_unit(Dimension d) const {
     case Dimension::force: return force_;
     case Dimension::pressure: return "(" + force_ + ")/(" + length_ + ")^2";
     case Dimension::angle: return "rad";
+    case Dimension::volume: return "(" + length_ + ")^3";
   }
   return "1";
 }
@@ -85,6 +87,7 @@ void UnitSystem::check_unit(const std::string& unit, Dimension d) const {
                           : d == Dimension::force ? "N"
                           : d == Dimension::pressure ? "Pa"
                           : d == Dimension::angle ? "rad"
+                          : d == Dimension::volume ? "m^3"
                                                   : "1";
   convert(1.0, unit, reference, dimension_name(d));
 }
@@ -103,10 +106,15 @@ std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string&
   if (d == Dimension::dimensionless) return "";
   std::string u = unit;
   if (u.empty())
-    u = d == Dimension::pressure ? units.force_unit() + "_per_" + units.length_unit() + "2" : units.internal_unit(d);
-  for (char& c : u)
-    if (c == '/' || c == ' ' || c == '^' || c == '(' || c == ')' || c == '*' || c == '.') c = '_';
-  return "_" + u;
+    u = d == Dimension::pressure ? units.force_unit() + "_per_" + units.length_unit() + "2"
+        : d == Dimension::volume ? units.length_unit() + "3"
+                                 : units.internal_unit(d);
+  std::string out;
+  for (char c : u) {
+    if (c == '^') continue;  // mm^3 → mm3
+    out += (c == '/' || c == ' ' || c == '(' || c == ')' || c == '*' || c == '.') ? '_' : c;
+  }
+  return "_" + out;
 }
 
 bool split_quantity(const std::string& text, double& value, std::string& unit) {

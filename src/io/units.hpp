@@ -8,13 +8,13 @@
 namespace tunica {
 
 /// The physical dimension a parameter or output quantity carries.
-enum class Dimension { dimensionless, length, force, pressure, angle };
+enum class Dimension { dimensionless, length, force, pressure, angle, volume };
 
 /// Human name of a dimension ("length", "pressure (stress)", ...).
 const char* dimension_name(Dimension d);
 
 /// A unit system given by a length unit and a force unit; pressure and stress
-/// are force/length², angles are radians internally.
+/// are force/length², volume length³, angles are radians internally.
 class UnitSystem {
 public:
   /// Default system: mm and N (stress in N/mm² = MPa). Throws std::invalid_argument

@@ -35,6 +35,8 @@ public:
   virtual std::string type() const = 0;
   /// W(v) and its first and second partial derivatives; v = (C11, C22, C12, C33).
   virtual EnergyDerivatives energy(const Eigen::Vector4d& v) const = 0;
+  /// True if W depends on C through its invariants only (the material frame does not matter).
+  virtual bool isotropic() const { return false; }
 };
 
 /// Membrane response at one point: reduced energy, 2nd Piola–Kirchhoff stress and tangent.

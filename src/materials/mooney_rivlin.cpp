@@ -10,6 +10,7 @@ class MooneyRivlinMaterial final : public MembraneMaterial {
 public:
   MooneyRivlinMaterial(double b1, double b2) : b1_(b1), b2_(b2) {}
   std::string type() const override { return "mooney_rivlin"; }
+  bool isotropic() const override { return true; }
   EnergyDerivatives energy(const Eigen::Vector4d& v) const override {
     const double I1 = v(0) + v(1) + v(3);
     const double I2 = v(0) * v(1) - v(2) * v(2) + v(3) * (v(0) + v(1));

@@ -10,6 +10,7 @@ class NeoHookeanMaterial final : public MembraneMaterial {
 public:
   explicit NeoHookeanMaterial(double mu) : mu_(mu) {}
   std::string type() const override { return "neo_hookean"; }
+  bool isotropic() const override { return true; }
   EnergyDerivatives energy(const Eigen::Vector4d& v) const override {
     EnergyDerivatives out;
     out.W = 0.5 * mu_ * (v(0) + v(1) + v(3) - 3.0);

@@ -1,7 +1,9 @@
 #pragma once
 // The analysis model built from a deck: nodes, parts (element type, material,
 // thickness, connectivity), node sets, prescribed displacements, loads, steps
-// and output requests. Axisymmetric models have two DOFs per node (u_r, u_z).
+// and output requests. A model is either axisymmetric (two DOFs per node,
+// (u_r, u_z); positions (r, z, 0)) or three-dimensional (three DOFs per node,
+// (u_x, u_y, u_z)).
 #include <Eigen/Dense>
 #include <array>
 #include <map>
@@ -11,11 +13,34 @@
 
 #include "core/errors.hpp"
 #include "io/units.hpp"
+#include "loads/surface_pressure.hpp"
 #include "materials/membrane_material.hpp"
 
 namespace tunica {
 
-constexpr int kDofsPerNode = 2;  ///< axisymmetric: (u_r, u_z)
+enum class Geometry { axisymmetric, three_d };
+
+/// Element kinds: the 2-node axisymmetric membrane, the 3-node triangle and the 4-node quadrilateral membrane.
+enum class ElementKind { axisym2, tri3, quad4 };
+constexpr int nodes_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 3 : 4; }
+
+/// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
+struct ElementBlock {
+  ElementKind kind = ElementKind::axisym2;
+  std::vector<int> nodes;                  ///< global node numbers, nodes_per_element(kind) per element
+  std::vector<Eigen::Vector3d> direction;  ///< per-element direction 1 from the mesh file (frame `mesh`), else empty
+  int size() const { return static_cast<int>(nodes.size()) / nodes_per_element(kind); }
+  const int* element(int e) const { return nodes.data() + nodes_per_element(kind) * e; }
+};
+
+/// How a 3-D part's material direction 1 is chosen at each Gauss point (projected on the tangent plane).
+struct FrameRule {
+  enum class Type { edge, cylindrical, vector, mesh } type = Type::edge;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   ///< cylindrical: axis direction (unit)
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();   ///< cylindrical: a point on the axis
+  Eigen::Vector3d vector = Eigen::Vector3d::UnitX(); ///< vector: direction 1 before projection
+  std::string view;                                  ///< mesh: the element-data view name
+};
 
 struct Part {
   std::string name;
@@ -23,8 +48,14 @@ struct Part {
   const MembraneMaterial* material = nullptr;
   std::string material_name;
   double thickness = 0;                    ///< reference thickness H
-  std::vector<std::array<int, 2>> elements;  ///< global node numbers
-  std::vector<int> nodes;                  ///< global node numbers along the meridian
+  std::vector<ElementBlock> blocks;        ///< axisymmetric: one axisym2 block; 3-D: triangles and/or quads
+  std::vector<int> nodes;                  ///< global node numbers (axisymmetric: in meridian order)
+  FrameRule frame;                         ///< 3-D parts
+  int num_elements() const {
+    int n = 0;
+    for (const auto& b : blocks) n += b.size();
+    return n;
+  }
 };
 
 struct NodeSet {
@@ -42,11 +73,20 @@ struct Boundary {
 };
 
 /// Follower pressure on the surface of a part; its magnitude is ramped like a boundary value.
+/// The enclosed volume of its surface (see surface_pressure.hpp) is an output and may be controlled.
 struct PressureLoad {
   std::string name;
   int part = -1;
   double sign = 1;  ///< −1 when the deck flips the side it acts on
+  VolumeMeasure volume;  ///< how the enclosed volume is measured (3-D; axisymmetric: about the z axis)
   SourceLocation where;
+};
+
+/// Volume control of a step: the pressure of `load` becomes an unknown and the
+/// enclosed volume is ramped from its value at the start of the step to `target`.
+struct VolumeControl {
+  int load = -1;
+  double target = 0;
 };
 
 /// Newton and increment-control settings.
@@ -62,6 +102,7 @@ struct Step {
   std::string name;
   int increments = 1;
   std::map<std::string, double> targets;  ///< boundary or load name → value at the end of the step
+  VolumeControl volume_control;           ///< load < 0: none
   SolverSettings solver;
 };
 
@@ -80,14 +121,15 @@ struct HistoryRequest {
 struct OutputSettings {
   std::vector<HistoryRequest> history;
   bool vtk = true;
-  int vtk_segments = 48;  ///< hoop subdivisions of the revolved surface
+  int vtk_segments = 48;  ///< hoop subdivisions of the revolved surface (axisymmetric)
 };
 
 struct Model {
   std::string deck_file;
   std::string title;
   UnitSystem units;
-  std::vector<Eigen::Vector2d> X;  ///< reference node positions (r, z)
+  Geometry geometry = Geometry::axisymmetric;
+  std::vector<Eigen::Vector3d> X;  ///< reference node positions (axisymmetric: (r, z, 0))
   std::map<std::string, std::unique_ptr<MembraneMaterial>> materials;
   std::vector<Part> parts;
   std::vector<NodeSet> node_sets;
@@ -97,7 +139,12 @@ struct Model {
   OutputSettings output;
 
   int num_nodes() const { return static_cast<int>(X.size()); }
-  int num_dofs() const { return kDofsPerNode * num_nodes(); }
+  int dofs_per_node() const { return geometry == Geometry::axisymmetric ? 2 : 3; }
+  int num_dofs() const { return dofs_per_node() * num_nodes(); }
+  /// DOF names in node order: {"r", "z"} or {"x", "y", "z"}.
+  std::vector<std::string> dof_names() const {
+    return geometry == Geometry::axisymmetric ? std::vector<std::string>{"r", "z"} : std::vector<std::string>{"x", "y", "z"};
+  }
   int find_node_set(const std::string& name) const;
   int find_part(const std::string& name) const;
 };

@@ -31,25 +31,31 @@ double point_value(const MembranePoint& p, const std::string& q) {
   if (q == "lambda_3") return p.lambda(2);
   if (q == "E_1") return p.E(0);
   if (q == "E_2") return p.E(1);
+  if (q == "E_12") return p.E(2);
   if (q == "S_1") return p.S(0);
   if (q == "S_2") return p.S(1);
+  if (q == "S_12") return p.S(2);
   if (q == "sigma_1") return p.sigma(0);
   if (q == "sigma_2") return p.sigma(1);
+  if (q == "sigma_max") return p.sigma_principal(0);
+  if (q == "sigma_min") return p.sigma_principal(1);
   if (q == "thickness") return p.thickness;
   if (q == "radius") return p.r;
   throw std::logic_error("unknown element quantity " + q);
 }
 
+/// Node quantities `<what>_<dof>`: position, displacement, reaction.
 double node_value(const Analysis& a, int node, const std::string& q) {
   const Model& m = a.model();
-  const int d = kDofsPerNode * node;
+  const auto names = m.dof_names();
+  const std::string dof = q.substr(q.rfind('_') + 1);
+  const int c = static_cast<int>(std::find(names.begin(), names.end(), dof) - names.begin());
+  if (c >= static_cast<int>(names.size())) throw std::logic_error("no DOF " + dof + " in this model");
+  const int d = m.dofs_per_node() * node + c;
   const Eigen::VectorXd& u = a.displacement();
-  if (q == "position_r") return m.X[node](0) + u(d);
-  if (q == "position_z") return m.X[node](1) + u(d + 1);
-  if (q == "displacement_r") return u(d);
-  if (q == "displacement_z") return u(d + 1);
-  if (q == "reaction_r") return a.reactions()(d);
-  if (q == "reaction_z") return a.reactions()(d + 1);
+  if (q.rfind("position_", 0) == 0) return m.X[node](c) + u(d);
+  if (q.rfind("displacement_", 0) == 0) return u(d);
+  if (q.rfind("reaction_", 0) == 0) return a.reactions()(d);
   throw std::logic_error("unknown node quantity " + q);
 }
 
@@ -64,7 +70,7 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
     if (r.quantity == "time") {
       v = info.time;
     } else if (r.load >= 0) {
-      v = a.loads().pressure[r.load];
+      v = r.quantity == "volume" ? a.loads().volume[r.load] : a.loads().pressure[r.load];
     } else if (r.part >= 0) {
       if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part);
       std::vector<double> vals;

@@ -12,7 +12,7 @@ namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 1";
+constexpr const char* kMagic = "tunica-restart 2";
 constexpr long kMaxValues = 100'000'000;  // refuse absurd counts before allocating
 
 void put(std::string& s, const char* key, const std::vector<double>& v) {
@@ -95,8 +95,10 @@ std::string restart_text(const RestartRecord& r) {
   put(s, "frame_times", r.frame_times);
   put(s, "step_start_boundary", c.step_start.boundary);
   put(s, "step_start_pressure", c.step_start.pressure);
+  put(s, "step_start_volume", c.step_start.volume);
   put(s, "boundary", c.loads.boundary);
   put(s, "pressure", c.loads.pressure);
+  put(s, "volume", c.loads.volume);
   put(s, "u", std::vector<double>(c.u.data(), c.u.data() + c.u.size()));
   return s;
 }
@@ -124,8 +126,10 @@ RestartRecord read_restart(const std::string& path) {
   r.frame_times = in.vector("frame_times");
   c.step_start.boundary = in.vector("step_start_boundary");
   c.step_start.pressure = in.vector("step_start_pressure");
+  c.step_start.volume = in.vector("step_start_volume");
   c.loads.boundary = in.vector("boundary");
   c.loads.pressure = in.vector("pressure");
+  c.loads.volume = in.vector("volume");
   const auto u = in.vector("u");
   c.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
   if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");

@@ -56,7 +56,7 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
     newton_rows_ = resume->newton_rows;
     frame_times_ = resume->frame_times;
     for (std::size_t f = 0; f < frame_times_.size(); ++f) {
-      meridian_.preload(frame_times_[f], frame_file("meridian", f));
+      if (model_.geometry == Geometry::axisymmetric) meridian_.preload(frame_times_[f], frame_file("meridian", f));
       surface_.preload(frame_times_[f], frame_file("surface", f));
     }
   }
@@ -88,9 +88,13 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   write_file_atomically(dir_ + "/newton.csv", newton_);
   if (model_.output.vtk) {
     const std::size_t frame = frame_times_.size();
-    write_file_atomically(dir_ + "/" + frame_file("meridian", frame), meridian_vtu(analysis));
-    write_file_atomically(dir_ + "/" + frame_file("surface", frame), surface_vtu(analysis, model_.output.vtk_segments));
-    meridian_.add(info.time, frame_file("meridian", frame));
+    if (model_.geometry == Geometry::axisymmetric) {
+      write_file_atomically(dir_ + "/" + frame_file("meridian", frame), meridian_vtu(analysis));
+      write_file_atomically(dir_ + "/" + frame_file("surface", frame), surface_vtu(analysis, model_.output.vtk_segments));
+      meridian_.add(info.time, frame_file("meridian", frame));
+    } else {
+      write_file_atomically(dir_ + "/" + frame_file("surface", frame), surface3d_vtu(analysis));
+    }
     surface_.add(info.time, frame_file("surface", frame));
     frame_times_.push_back(info.time);
   }

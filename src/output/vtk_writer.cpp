@@ -16,6 +16,7 @@ namespace {
 struct CellField {
   std::string name;
   std::vector<double> values;
+  int components = 1;
 };
 
 /// Cell-averaged Gauss-point fields of all parts, in part/element order.
@@ -70,30 +71,83 @@ std::string data_array(const std::string& name, const char* type, int components
   return s + "\n</DataArray>\n";
 }
 
-std::string grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity, int nodes_per_cell,
-                 std::uint8_t vtk_type, const std::vector<double>& displacement, const std::vector<CellField>& cells,
-                 int cell_repeat) {
-  const std::size_t np = points.size() / 3, nc = connectivity.size() / nodes_per_cell;
+/// An UnstructuredGrid: cell c has the nodes connectivity[offsets[c−1] … offsets[c]) and type types[c];
+/// each cell field value is repeated `cell_repeat` times (the revolved surface's hoop segments).
+std::string grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
+                 const std::vector<std::int64_t>& offsets, const std::vector<std::uint8_t>& types,
+                 const std::vector<double>& displacement, const std::vector<CellField>& cells, int cell_repeat) {
+  const std::size_t np = points.size() / 3, nc = offsets.size();
   std::string s =
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
   s += fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", np, nc);
   s += data_array("Points", "Float64", 3, points) + "</Points>\n<Cells>\n";
-  std::vector<std::int64_t> offsets(nc);
-  for (std::size_t c = 0; c < nc; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * nodes_per_cell);
   s += data_array("connectivity", "Int64", 1, connectivity);
   s += data_array("offsets", "Int64", 1, offsets);
-  s += data_array("types", "UInt8", 1, std::vector<std::uint8_t>(nc, vtk_type));
+  s += data_array("types", "UInt8", 1, types);
   s += "</Cells>\n<PointData Vectors=\"displacement\">\n";
   s += data_array("displacement", "Float64", 3, displacement) + "</PointData>\n<CellData>\n";
   for (const auto& f : cells) {
     std::vector<double> v;
     v.reserve(f.values.size() * cell_repeat);
-    for (double x : f.values)
-      for (int k = 0; k < cell_repeat; ++k) v.push_back(x);
-    s += data_array(f.name, "Float64", 1, v);
+    for (std::size_t c = 0; c < f.values.size(); c += f.components)
+      for (int k = 0; k < cell_repeat; ++k) v.insert(v.end(), f.values.begin() + c, f.values.begin() + c + f.components);
+    s += data_array(f.name, "Float64", f.components, v);
   }
   return s + "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+}
+
+/// Uniform cells of `nodes_per_cell` nodes and one VTK type.
+std::string uniform_grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
+                         int nodes_per_cell, std::uint8_t vtk_type, const std::vector<double>& displacement,
+                         const std::vector<CellField>& cells, int cell_repeat) {
+  const std::size_t nc = connectivity.size() / nodes_per_cell;
+  std::vector<std::int64_t> offsets(nc);
+  for (std::size_t c = 0; c < nc; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * nodes_per_cell);
+  return grid(points, connectivity, offsets, std::vector<std::uint8_t>(nc, vtk_type), displacement, cells, cell_repeat);
+}
+
+/// Cell averages of the Gauss-point states of a 3-D model, with the material frame and the Cauchy tensor.
+std::vector<CellField> surface_cell_fields(const Analysis& a) {
+  const Model& m = a.model();
+  const std::string s = unit_suffix(m.units, Dimension::pressure);
+  const std::string l = unit_suffix(m.units, Dimension::length);
+  std::vector<CellField> f = {{"lambda_1", {}},          {"lambda_2", {}},          {"lambda_3", {}},
+                              {"E_1", {}},               {"E_2", {}},               {"E_12", {}},
+                              {"S_1" + s, {}},           {"S_2" + s, {}},           {"S_12" + s, {}},
+                              {"sigma_1" + s, {}},       {"sigma_2" + s, {}},       {"sigma_max" + s, {}},
+                              {"sigma_min" + s, {}},     {"thickness" + l, {}},     {"part", {}},
+                              {"direction_1", {}, 3},    {"direction_2", {}, 3},    {"cauchy_stress" + s, {}, 9}};
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
+    std::size_t k = 0;
+    for (const auto& block : m.parts[p].blocks) {
+      const int q = points_per_element(block.kind);
+      for (int e = 0; e < block.size(); ++e, k += q) {
+        MembranePoint avg;
+        avg.lambda.setZero();
+        for (int g = 0; g < q; ++g) {
+          const MembranePoint& x = pts[k + g];
+          avg.lambda += x.lambda / q;
+          avg.E += x.E / q;
+          avg.S += x.S / q;
+          avg.sigma += x.sigma / q;
+          avg.sigma_principal += x.sigma_principal / q;
+          avg.thickness += x.thickness / q;
+          avg.cauchy += x.cauchy / q;
+        }
+        const double v[15] = {avg.lambda(0), avg.lambda(1), avg.lambda(2), avg.E(0), avg.E(1), avg.E(2),
+                              avg.S(0), avg.S(1), avg.S(2), avg.sigma(0), avg.sigma(1), avg.sigma_principal(0),
+                              avg.sigma_principal(1), avg.thickness, static_cast<double>(p)};
+        for (int i = 0; i < 15; ++i) f[i].values.push_back(v[i]);
+        // The frame at the first Gauss point (exact for triangles).
+        for (int i = 0; i < 3; ++i) f[15].values.push_back(pts[k].e1(i));
+        for (int i = 0; i < 3; ++i) f[16].values.push_back(pts[k].e2(i));
+        for (int i = 0; i < 9; ++i) f[17].values.push_back(avg.cauchy(i / 3, i % 3));
+      }
+    }
+  }
+  return f;
 }
 
 }  // namespace
@@ -103,14 +157,15 @@ std::string meridian_vtu(const Analysis& a) {
   const Eigen::VectorXd& u = a.displacement();
   std::vector<double> pts, disp;
   for (int n = 0; n < m.num_nodes(); ++n) {
-    const double ur = u(kDofsPerNode * n), uz = u(kDofsPerNode * n + 1);
+    const double ur = u(2 * n), uz = u(2 * n + 1);
     pts.insert(pts.end(), {m.X[n](0) + ur, 0.0, m.X[n](1) + uz});
     disp.insert(disp.end(), {ur, 0.0, uz});
   }
   std::vector<std::int64_t> conn;
   for (const auto& p : m.parts)
-    for (const auto& e : p.elements) conn.insert(conn.end(), {e[0], e[1]});
-  return grid(pts, conn, 2, 3 /*VTK_LINE*/, disp, cell_fields(a), 1);
+    for (const auto& b : p.blocks)
+      for (int e = 0; e < b.size(); ++e) conn.insert(conn.end(), {b.element(e)[0], b.element(e)[1]});
+  return uniform_grid(pts, conn, 2, 3 /*VTK_LINE*/, disp, cell_fields(a), 1);
 }
 
 std::string surface_vtu(const Analysis& a, int segments) {
@@ -118,7 +173,7 @@ std::string surface_vtu(const Analysis& a, int segments) {
   const Eigen::VectorXd& u = a.displacement();
   std::vector<double> pts, disp;
   for (int n = 0; n < m.num_nodes(); ++n) {
-    const double ur = u(kDofsPerNode * n), uz = u(kDofsPerNode * n + 1);
+    const double ur = u(2 * n), uz = u(2 * n + 1);
     const double r = m.X[n](0) + ur, z = m.X[n](1) + uz;
     for (int j = 0; j < segments; ++j) {
       const double phi = 2.0 * std::numbers::pi * j / segments, c = std::cos(phi), s = std::sin(phi);
@@ -128,12 +183,40 @@ std::string surface_vtu(const Analysis& a, int segments) {
   }
   std::vector<std::int64_t> conn;
   for (const auto& p : m.parts)
-    for (const auto& e : p.elements)
-      for (int j = 0; j < segments; ++j) {
-        const int k = (j + 1) % segments;
-        conn.insert(conn.end(), {e[0] * segments + j, e[1] * segments + j, e[1] * segments + k, e[0] * segments + k});
+    for (const auto& b : p.blocks)
+      for (int el = 0; el < b.size(); ++el) {
+        const int* e = b.element(el);
+        for (int j = 0; j < segments; ++j) {
+          const int k = (j + 1) % segments;
+          conn.insert(conn.end(), {e[0] * segments + j, e[1] * segments + j, e[1] * segments + k, e[0] * segments + k});
+        }
       }
-  return grid(pts, conn, 4, 9 /*VTK_QUAD*/, disp, cell_fields(a), segments);
+  return uniform_grid(pts, conn, 4, 9 /*VTK_QUAD*/, disp, cell_fields(a), segments);
+}
+
+std::string surface3d_vtu(const Analysis& a) {
+  const Model& m = a.model();
+  const Eigen::VectorXd& u = a.displacement();
+  std::vector<double> pts, disp;
+  pts.reserve(3 * m.num_nodes());
+  disp.reserve(3 * m.num_nodes());
+  for (int n = 0; n < m.num_nodes(); ++n)
+    for (int i = 0; i < 3; ++i) {
+      pts.push_back(m.X[n](i) + u(3 * n + i));
+      disp.push_back(u(3 * n + i));
+    }
+  std::vector<std::int64_t> conn, offsets;
+  std::vector<std::uint8_t> types;
+  for (const auto& p : m.parts)
+    for (const auto& b : p.blocks) {
+      const int nen = nodes_per_element(b.kind);
+      for (int e = 0; e < b.size(); ++e) {
+        conn.insert(conn.end(), b.element(e), b.element(e) + nen);
+        offsets.push_back(static_cast<std::int64_t>(conn.size()));
+        types.push_back(nen == 3 ? 5 /*VTK_TRIANGLE*/ : 9 /*VTK_QUAD*/);
+      }
+    }
+  return grid(pts, conn, offsets, types, disp, surface_cell_fields(a), 1);
 }
 
 void PvdSeries::add(double time, const std::string& file) {

@@ -1,7 +1,10 @@
 #pragma once
-// ParaView output of axisymmetric models: the meridian as line cells in the
+// ParaView output. Axisymmetric models: the meridian as line cells in the
 // (x = r, z) plane, and the membrane revolved about the z axis as a 3-D
-// surface of quadrilaterals. One .vtu per increment and a .pvd series of each.
+// surface of quadrilaterals. 3-D models: the membrane surface (triangles and
+// quadrilaterals) with cell-averaged strains and stresses in the material frame,
+// the principal Cauchy stresses, the Cauchy tensor and the material directions.
+// One .vtu per increment and a .pvd series of each.
 #include <string>
 #include <vector>
 
@@ -13,6 +16,9 @@ namespace tunica {
 std::string meridian_vtu(const Analysis& analysis);
 /// The revolved surface (quads, `segments` around the axis) as VTK XML text.
 std::string surface_vtu(const Analysis& analysis, int segments);
+
+/// The surface of a 3-D model at the current state as VTK XML text.
+std::string surface3d_vtu(const Analysis& analysis);
 
 /// A ParaView .pvd collection that lists one dataset per time value.
 class PvdSeries {

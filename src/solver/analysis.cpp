@@ -11,8 +11,15 @@ Analysis::Analysis(const Model& model) : model_(model), system_(model) {
   state_.u.setZero(model.num_dofs());
   state_.loads.boundary.assign(model.boundaries.size(), 0.0);
   state_.loads.pressure.assign(model.loads.size(), 0.0);
+  update_volumes();
   state_.step_start = state_.loads;
   reactions_.setZero(model.num_dofs());
+}
+
+void Analysis::update_volumes() {
+  state_.loads.volume.resize(model_.loads.size());
+  for (std::size_t l = 0; l < model_.loads.size(); ++l)
+    state_.loads.volume[l] = system_.volume(state_.u, static_cast<int>(l));
 }
 
 void Analysis::update_reactions() {
@@ -56,6 +63,12 @@ void Analysis::run_step(AnalysisObserver& observer) {
     for (std::size_t k = 0; k < l.pressure.size(); ++k) l.pressure[k] += t * (end.pressure[k] - start.pressure[k]);
     return l;
   };
+  // Volume control: the load's pressure is an unknown (starting from the last converged value)
+  // and the enclosed volume is ramped from its value at the start of the step to the target.
+  const VolumeControl& vc = step.volume_control;
+  const auto volume_at = [&](double t) {
+    return start.volume[vc.load] + t * (vc.target - start.volume[vc.load]);
+  };
 
   auto solver = make_linear_solver(step.solver.linear_solver);
   const double nominal = 1.0 / step.increments;
@@ -71,14 +84,21 @@ void Analysis::run_step(AnalysisObserver& observer) {
       info.attempt = attempt;
       info.fraction = t + dt;
       info.time = static_cast<double>(s) + info.fraction;
-      const LoadState trial = at(info.fraction);
+      LoadState trial = at(info.fraction);
+      VolumeConstraint constraint;
+      if (vc.load >= 0) {
+        trial.pressure[vc.load] = state_.loads.pressure[vc.load];
+        constraint = {vc.load, volume_at(info.fraction)};
+      }
       Eigen::VectorXd u = state_.u;
       system_.apply_boundary(trial, u);
       const NewtonResult r = newton(system_, *solver, trial, u, step.solver,
-                                    [&](const IterationRecord& rec) { observer.on_iteration(info, rec); });
+                                    [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
+                                    vc.load >= 0 ? &constraint : nullptr);
       if (r.converged) {
         state_.u = u;
         state_.loads = trial;
+        update_volumes();
         info.iterations = r.iterations;
         break;
       }

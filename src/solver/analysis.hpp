@@ -73,6 +73,8 @@ public:
 
 private:
   void update_reactions();
+  /// Enclosed volumes of every load's surface at the current state (LoadState::volume).
+  void update_volumes();
   /// Solves step `state_.step` from `state_.fraction` to its end.
   void run_step(AnalysisObserver& observer);
 

@@ -12,10 +12,44 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+/// The pattern of K bordered by a full last column and row (index nf).
+SparseMatrix bordered_pattern(const SparseMatrix& K) {
+  const int nf = static_cast<int>(K.cols());
+  SparseMatrix A(nf + 1, nf + 1);
+  A.resizeNonZeros(K.nonZeros() + 2 * nf + 1);
+  int* outer = A.outerIndexPtr();
+  int* inner = A.innerIndexPtr();
+  int k = 0;
+  for (int j = 0; j < nf; ++j) {
+    outer[j] = k;
+    for (int q = K.outerIndexPtr()[j]; q < K.outerIndexPtr()[j + 1]; ++q) inner[k++] = K.innerIndexPtr()[q];
+    inner[k++] = nf;
+  }
+  outer[nf] = k;
+  for (int i = 0; i <= nf; ++i) inner[k++] = i;
+  outer[nf + 1] = k;
+  std::fill(A.valuePtr(), A.valuePtr() + k, 0.0);
+  return A;
+}
+
+/// Fills the bordered matrix A (pattern of bordered_pattern) from K, the column −g and the row ∂V/∂u.
+void fill_bordered(const SparseMatrix& K, const Eigen::VectorXd& g, const Eigen::VectorXd& dV, SparseMatrix& A) {
+  const int nf = static_cast<int>(K.cols());
+  double* a = A.valuePtr();
+  int k = 0;
+  for (int j = 0; j < nf; ++j) {
+    for (int q = K.outerIndexPtr()[j]; q < K.outerIndexPtr()[j + 1]; ++q) a[k++] = K.valuePtr()[q];
+    a[k++] = dV(j);
+  }
+  for (int i = 0; i < nf; ++i) a[k++] = -g(i);
+  a[k++] = 0.0;
+}
 }  // namespace
 
-NewtonResult newton(const System& system, LinearSolver& solver, const LoadState& loads, Eigen::VectorXd& u,
-                    const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration) {
+NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
+                    const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
+                    const VolumeConstraint* constraint) {
   constexpr double kRoundoff = 1e-14;  // ‖R‖ below this fraction of the cancelling forces is round-off
   constexpr double kDivergence = 1e8;  // ‖R‖ above this multiple of ‖R₀‖ is divergence
   NewtonResult result;
@@ -24,6 +58,15 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
   SparseMatrix K = system.pattern();
   double r0 = 0, e1 = 0, energy = 0;
   Eigen::VectorXd du;
+  // Volume control: constraint residual c = V − target, the bordered matrix and its border vectors.
+  SparseMatrix A;
+  Eigen::VectorXd gfree(nf), dVfree(nf), dV;
+  double c = 0;
+  if (constraint) A = bordered_pattern(K);
+  const auto to_free = [&](const Eigen::VectorXd& full, Eigen::VectorXd& free) {
+    for (int i = 0; i < system.num_dofs(); ++i)
+      if (system.equation(i) >= 0) free(system.equation(i)) = full(i);
+  };
   for (int k = 0;; ++k) {
     IterationRecord rec;
     rec.iteration = k;
@@ -35,12 +78,17 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
       result.failure = e.what();
       return result;
     }
+    if (constraint) {
+      c = system.volume(u, constraint->load, &dV) - constraint->target;
+      to_free(dV, dVfree);
+      to_free(system.pressure_load(u, constraint->load), gfree);
+    }
     rec.assembly_seconds = seconds_since(t0);
-    for (int i = 0; i < system.num_dofs(); ++i)
-      if (system.equation(i) >= 0) Rf(system.equation(i)) = R(i);
+    to_free(R, Rf);
     rec.residual = Rf.norm();
-    if (k == 0) r0 = rec.residual;
-    if (k > 0) energy = std::abs(du.dot(Rf));  // energy norm of the last correction against the new residual
+    // Under volume control R₀ is ~0 (only the target moved): the first corrected residual is the yardstick.
+    if (k == 0 || (constraint && k == 1)) r0 = std::max(r0, rec.residual);
+    if (k > 0) energy = std::abs(du.head(nf).dot(Rf) + (constraint ? du(nf) * c : 0.0));  // last correction · new residual
     rec.relative_residual = r0 > 0 ? rec.residual / r0 : 0.0;
     rec.energy = energy;
     rec.relative_energy = e1 > 0 ? energy / e1 : 0.0;
@@ -51,9 +99,10 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
       result.failure = "the residual is not finite";
       return result;
     }
-    const bool at_roundoff = rec.residual <= kRoundoff * scale;
+    const bool volume_ok = !constraint || std::abs(c) <= settings.residual_tolerance * std::abs(constraint->target);
+    const bool at_roundoff = rec.residual <= kRoundoff * scale && volume_ok;
     const bool tests = k > 0 && rec.residual <= settings.residual_tolerance * r0 &&
-                       (e1 == 0 || energy <= settings.energy_tolerance * e1);
+                       (e1 == 0 || energy <= settings.energy_tolerance * e1) && volume_ok;
     if (at_roundoff || tests) {
       on_iteration(rec);
       result.converged = true;
@@ -70,13 +119,20 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
       return result;
     }
     const auto t1 = std::chrono::steady_clock::now();
-    if (!solver.factorize(K)) {
+    if (constraint) fill_bordered(K, gfree, dVfree, A);
+    if (!solver.factorize(constraint ? A : K)) {
       rec.solve_seconds = seconds_since(t1);
       on_iteration(rec);
       result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
       return result;
     }
-    du = solver.solve(-Rf);
+    if (constraint) {
+      Eigen::VectorXd rhs(nf + 1);
+      rhs << -Rf, -c;
+      du = solver.solve(rhs);
+    } else {
+      du = solver.solve(-Rf);
+    }
     rec.solve_seconds = seconds_since(t1);
     if (!du.allFinite()) {
       on_iteration(rec);
@@ -84,9 +140,10 @@ NewtonResult newton(const System& system, LinearSolver& solver, const LoadState&
       return result;
     }
     on_iteration(rec);
-    if (k == 0) e1 = std::abs(du.dot(Rf));  // reference: first correction against the initial residual
+    if (k == 0) e1 = std::abs(du.head(nf).dot(Rf) + (constraint ? du(nf) * c : 0.0));  // first correction · R₀
     for (int i = 0; i < system.num_dofs(); ++i)
       if (system.equation(i) >= 0) u(i) += du(system.equation(i));
+    if (constraint) loads.pressure[constraint->load] += du(nf);
   }
 }
 

@@ -27,10 +27,21 @@ struct NewtonResult {
   double last_relative_residual = 0;
 };
 
+/// An enclosed-volume constraint V(u) = target whose pressure (of `load`) is an unknown.
+struct VolumeConstraint {
+  int load = -1;
+  double target = 0;
+};
+
 /// Iterates on u (prescribed DOFs already set) until the convergence tests of
 /// `settings` hold: ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
 /// round-off (≤ 1e-14 of the force scale of System::assemble). On failure u is left as it was last.
-NewtonResult newton(const System& system, LinearSolver& solver, const LoadState& loads, Eigen::VectorXd& u,
-                    const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration);
+/// With a volume constraint the pressure loads.pressure[constraint->load] is a further
+/// unknown: the bordered system [K −g; ∂V/∂uᵀ 0] [Δu; Δp] = −[R; V − target]
+/// (g = ∂f_ext/∂p) is solved as one sparse matrix, which stays regular at a
+/// pressure maximum, and |V − target| ≤ tol_r |target| is required too.
+NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
+                    const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
+                    const VolumeConstraint* constraint = nullptr);
 
 }  // namespace tunica

@@ -175,7 +175,7 @@ steps: [{increments: 1, set: {p: 100 mmHg}}]
 )",
                                  "inline");
   const System sys(m);
-  LoadState loads{{0.0}, {0.0133322}};
+  LoadState loads{{0.0}, {0.0133322}, {0.0}};
   std::mt19937 rng(6);
   std::uniform_real_distribution<double> u(-0.05, 0.08);
   Eigen::VectorXd u0(m.num_dofs());

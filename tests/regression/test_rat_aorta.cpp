@@ -99,7 +99,7 @@ TEST(RatAorta, FiftyElementsGiveTheSameState) {
   expect_closed_form(r, 50);
   // Every Gauss point of the 50 elements in the same state: min = max.
   const Model& m = r.model;
-  EXPECT_EQ(m.parts[0].elements.size(), 50u);
+  EXPECT_EQ(m.parts[0].num_elements(), 50);
   Analysis a(m);
   Capture c;
   a.run(c);

@@ -1,0 +1,234 @@
+#include "io/deck_surface_parts.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "assembly/references.hpp"
+#include "io/deck_limits.hpp"
+#include "mesh/gmsh_reader.hpp"
+#include "mesh/mesh_checks.hpp"
+#include "mesh/surface_generators.hpp"
+
+namespace tunica {
+
+const ComponentSpec& frame_spec() {
+  static const ComponentSpec s{
+      "parts.frame", "",
+      "Material frame of a 3-D part: direction 1 at each Gauss point is the rule's vector projected on the "
+      "reference tangent plane and normalized; direction 2 = n × direction 1 (n: the element normal). "
+      "`cylindrical`: direction 1 circumferential about `axis` through `point` (for a tube along the axis, "
+      "2 is axial); `vector`: `direction` projected; `mesh`: per-element vectors of the Gmsh element-data "
+      "view `view`; `edge` (default): along each element's first edge, for isotropic materials. A "
+      "direction within 0.06° of the normal is an error. ParaView output shows both directions per element.",
+      {with_default(one_of(text("type", "frame rule"), {"edge", "cylindrical", "vector", "mesh"}), "edge"),
+       with_default(numbers("axis", Dimension::dimensionless, 3, "cylindrical: axis direction"), "[0, 0, 1]"),
+       with_default(numbers("point", Dimension::length, 3, "cylindrical: a point on the axis"), "[0, 0, 0]"),
+       with_default(numbers("direction", Dimension::dimensionless, 3, "vector: direction 1 before projection"),
+                    "[1, 0, 0]"),
+       text("view", "mesh: name of the 3-component element-data view in the Gmsh file")}};
+  return s;
+}
+
+const ComponentSpec& gmsh_mesh_spec() {
+  static const ComponentSpec s{
+      "mesh", "gmsh",
+      "A physical surface of a Gmsh file: a mesh (.msh) or a geometry (.geo, meshed in 2-D when read). "
+      "Parts that name the same file share its nodes. Its physical curves and points become node sets "
+      "under their own names. Linear triangles and quadrilaterals only; their node order gives the "
+      "side pressure acts on.",
+      {required(text("file", "path of the .msh or .geo file, relative to the deck")),
+       required(text("surface", "name of the physical surface"))}};
+  return s;
+}
+
+namespace {
+
+Eigen::Vector3d vec3(const std::vector<double>& v) { return Eigen::Vector3d(v[0], v[1], v[2]); }
+
+FrameRule read_frame(const DeckNode& node, const Model& m, const Part& part) {
+  FrameRule f;
+  if (!node.defined()) {
+    if (!part.material->isotropic())
+      node.fail("material '" + part.material_name +
+                "' is anisotropic: give the part a `frame` (e.g. `frame: {type: cylindrical, axis: [0, 0, 1]}`)");
+    return f;
+  }
+  const Params p = read_params(node, frame_spec(), m.units);
+  const std::string& t = p.text("type");
+  if (t == "cylindrical") {
+    f.type = FrameRule::Type::cylindrical;
+    f.axis = vec3(p.numbers("axis"));
+    if (!(f.axis.norm() > 0)) p.fail("axis", "the axis direction must not be zero");
+    f.axis.normalize();
+    f.point = vec3(p.numbers("point"));
+  } else if (t == "vector") {
+    f.type = FrameRule::Type::vector;
+    f.vector = vec3(p.numbers("direction"));
+    if (!(f.vector.norm() > 0)) p.fail("direction", "the direction must not be zero");
+  } else if (t == "mesh") {
+    f.type = FrameRule::Type::mesh;
+    if (!p.has("view")) p.fail("type", "frame `mesh` needs the key `view` (the element-data view name)");
+    f.view = p.text("view");
+  } else {
+    f.type = FrameRule::Type::edge;
+  }
+  return f;
+}
+
+void add_set(Model& m, const std::string& name, std::vector<int> nodes, const DeckNode& where) {
+  if (m.find_node_set(name) >= 0) where.fail("node set '" + name + "' is defined twice (by two parts or files)");
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  m.node_sets.push_back({name, std::move(nodes)});
+}
+
+/// Blocks of a mesh surface with node numbers mapped to global ones.
+void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, bool directions, Part& part) {
+  if (!s.triangles.empty()) {
+    ElementBlock b;
+    b.kind = ElementKind::tri3;
+    for (const auto& t : s.triangles)
+      for (int n : t) b.nodes.push_back(global[n]);
+    if (directions) b.direction = s.triangle_direction;
+    part.blocks.push_back(std::move(b));
+  }
+  if (!s.quads.empty()) {
+    ElementBlock b;
+    b.kind = ElementKind::quad4;
+    for (const auto& q : s.quads)
+      for (int n : q) b.nodes.push_back(global[n]);
+    if (directions) b.direction = s.quad_direction;
+    part.blocks.push_back(std::move(b));
+  }
+  for (const auto& b : part.blocks) part.nodes.insert(part.nodes.end(), b.nodes.begin(), b.nodes.end());
+  std::sort(part.nodes.begin(), part.nodes.end());
+  part.nodes.erase(std::unique(part.nodes.begin(), part.nodes.end()), part.nodes.end());
+}
+
+}  // namespace
+
+void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCache& cache) {
+  const DeckNode frame = node["frame"];
+  part.frame = read_frame(frame, m, part);
+  const DeckNode mesh = node.required("mesh");
+  if (!mesh.is_map()) mesh.fail("expected a map with `type: tube`, `sphere`, `octant` or `gmsh`");
+  const std::string type = mesh.required("type").as_string();
+
+  if (type == "gmsh") {
+    const Params mp = read_params(mesh, gmsh_mesh_spec(), m.units, {"type"});
+    std::filesystem::path file(mp.text("file"));
+    if (file.is_relative()) file = std::filesystem::path(m.deck_file).parent_path() / file;
+    const std::string path = file.lexically_normal().string();
+    const std::string key = path + "\n" + part.frame.view;
+    auto it = cache.files.find(key);
+    if (it == cache.files.end()) {
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) mp.fail("file", "no such mesh file: " + path);
+      SurfaceMesh sm;
+      try {
+        sm = read_gmsh(path, part.frame.view);
+      } catch (const InputError& e) {
+        // Keep the mesh file's own location, and say which deck key asked for it.
+        throw InputError(e.where(), e.reason() + fmt::format(" (the mesh of {}:{}, key '{}')", mp.where("file").file,
+                                                              mp.where("file").line, mp.where("file").key));
+      }
+      if (static_cast<long>(m.num_nodes()) + static_cast<long>(sm.nodes.size()) > kMaxNodes)
+        mp.fail("file", fmt::format("the model would have more than {} nodes", kMaxNodes));
+      SurfaceMeshCache::Entry entry;
+      entry.global.resize(sm.nodes.size());
+      for (std::size_t i = 0; i < sm.nodes.size(); ++i) {
+        entry.global[i] = m.num_nodes();
+        m.X.push_back(sm.nodes[i]);
+      }
+      for (const auto& [name, nodes] : sm.node_sets) {
+        std::vector<int> g;
+        for (int n : nodes) g.push_back(entry.global[n]);
+        add_set(m, name, g, mesh["file"]);
+      }
+      entry.mesh = std::move(sm);
+      it = cache.files.emplace(key, std::move(entry)).first;
+    }
+    const auto& surfaces = it->second.mesh.surfaces;
+    auto s = std::find_if(surfaces.begin(), surfaces.end(), [&](const auto& x) { return x.name == mp.text("surface"); });
+    if (s == surfaces.end()) {
+      std::string list;
+      for (const auto& x : surfaces) list += (list.empty() ? "" : ", ") + x.name;
+      mp.fail("surface", "the file has no physical surface '" + mp.text("surface") + "' (it has: " + list + ")");
+    }
+    if (const std::string why = check_surface(it->second.mesh, *s); !why.empty())
+      mp.fail("surface", "physical surface '" + s->name + "': " + why);
+    add_blocks(*s, it->second.global, part.frame.type == FrameRule::Type::mesh, part);
+  } else {
+    auto gen = surface_generator_types().find(type);
+    if (gen == surface_generator_types().end())
+      mesh["type"].fail("unknown mesh type '" + type + "' for a membrane part (known: gmsh, octant, sphere, tube)");
+    if (part.frame.type == FrameRule::Type::mesh)
+      frame["type"].fail("frame `mesh` needs a Gmsh mesh with an element-data view");
+    const Params mp = read_params(mesh, gen->second.spec, m.units, {"type"});
+    const SurfaceMesh sm = gen->second.make(mp);
+    if (static_cast<long>(m.num_nodes()) + static_cast<long>(sm.nodes.size()) > kMaxNodes)
+      mesh.fail(fmt::format("the model would have more than {} nodes", kMaxNodes));
+    std::vector<int> global(sm.nodes.size());
+    for (std::size_t i = 0; i < sm.nodes.size(); ++i) {
+      global[i] = m.num_nodes();
+      m.X.push_back(sm.nodes[i]);
+    }
+    for (const auto& [name, nodes] : sm.node_sets) {
+      std::vector<int> g;
+      for (int n : nodes) g.push_back(global[n]);
+      add_set(m, part.name + "." + name, g, mesh);
+    }
+    if (const std::string why = check_surface(sm, sm.surfaces.at(0)); !why.empty()) mesh.fail(why);
+    add_blocks(sm.surfaces.at(0), global, false, part);
+  }
+  add_set(m, part.name + ".all", part.nodes, mesh);
+}
+
+void finish_surface_parts(const DeckNode& parts, Model& m) {
+  // Renumber the nodes elements use; drop the others (e.g. of Gmsh surfaces no part names).
+  std::vector<int> map(m.num_nodes(), -1);
+  int n = 0;
+  for (const auto& part : m.parts)
+    for (const auto& b : part.blocks)
+      for (int v : b.nodes)
+        if (map[v] < 0) map[v] = 0;
+  std::vector<Eigen::Vector3d> X;
+  for (int i = 0; i < m.num_nodes(); ++i)
+    if (map[i] == 0) {
+      map[i] = n++;
+      X.push_back(m.X[i]);
+    }
+  if (n != m.num_nodes()) {
+    m.X = std::move(X);
+    for (auto& part : m.parts) {
+      for (auto& b : part.blocks)
+        for (int& v : b.nodes) v = map[v];
+      for (int& v : part.nodes) v = map[v];
+    }
+    for (auto& set : m.node_sets) {
+      std::vector<int> kept;
+      for (int v : set.nodes)
+        if (map[v] >= 0) kept.push_back(map[v]);
+      set.nodes = std::move(kept);
+    }
+  }
+  for (const auto& part : m.parts) {
+    int first = 0;
+    for (const auto& block : part.blocks) {
+      try {
+        if (block.kind == ElementKind::tri3) block_references<3>(m, part, block, first);
+        if (block.kind == ElementKind::quad4) block_references<4>(m, part, block, first);
+      } catch (const BadElement& e) {
+        const std::string what = e.what();
+        const DeckNode pn = parts[part.name];
+        const bool frame_fault = what.find("direction") != std::string::npos && pn.has("frame");
+        (frame_fault ? pn["frame"] : pn["mesh"]).fail("part '" + part.name + "': " + what);
+      }
+      first += block.size();
+    }
+  }
+}
+
+}  // namespace tunica

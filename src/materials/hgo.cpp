@@ -1,0 +1,70 @@
+#include "materials/hgo.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace tunica {
+
+HgoMaterial::HgoMaterial(double mu, double k1, double k2, double beta, double kappa)
+    : mu_(mu), k1_(k1), k2_(k2) {
+  // I*_i = κ I1 + (1 − 3κ) I4_i is linear in v = (C11, C22, C12, C33):
+  //   dI1/dv = (1, 1, 0, 1),  dI4_i/dv = (cos²β, sin²β, ±2 cosβ sinβ, 0)
+  // (v3 = C12 stands for C12 and C21, hence the factor 2 of a_i·C a_i).
+  const double c = std::cos(beta), s = std::sin(beta);
+  const Eigen::Vector4d dI1(1, 1, 0, 1);
+  for (int i = 0; i < 2; ++i) {
+    const double sign = i == 0 ? 1.0 : -1.0;
+    const Eigen::Vector4d dI4(c * c, s * s, sign * 2.0 * c * s, 0.0);
+    dI_[i] = kappa * dI1 + (1.0 - 3.0 * kappa) * dI4;
+  }
+}
+
+EnergyDerivatives HgoMaterial::energy(const Eigen::Vector4d& v) const {
+  EnergyDerivatives out;
+  // Ground matrix (μ/2)(I1 − 3): gradient (μ/2)(1, 1, 0, 1), no curvature.
+  out.W = 0.5 * mu_ * (v(0) + v(1) + v(3) - 3.0);
+  out.dW = Eigen::Vector4d(0.5 * mu_, 0.5 * mu_, 0.0, 0.5 * mu_);
+  // Fibre family i, Ψ(I*) = k1/(2 k2)[exp(k2 (I* − 1)²) − 1] for I* > 1:
+  //   Ψ'  = k1 (I* − 1) exp(k2 (I* − 1)²),
+  //   Ψ'' = k1 [1 + 2 k2 (I* − 1)²] exp(k2 (I* − 1)²),
+  //   dW += Ψ' dI*/dv,  d²W += Ψ'' (dI*/dv)(dI*/dv)ᵀ  (I* is linear in v).
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Vector4d& a = dI_[i];
+    const double e = fibre_strain(i, v);  // I* − 1
+    if (!(e > 0.0)) continue;  // tension only
+    const double x = std::exp(k2_ * e * e);
+    out.W += 0.5 * k1_ / k2_ * (x - 1.0);
+    out.dW += k1_ * e * x * a;
+    out.d2W += k1_ * (1.0 + 2.0 * k2_ * e * e) * x * (a * a.transpose());
+  }
+  return out;
+}
+
+namespace {
+const RegisterMaterial reg_hgo(MaterialType{
+    ComponentSpec{
+        "materials", "hgo",
+        "Holzapfel–Gasser–Ogden (2000) artery law in membrane form, incompressible (no volumetric part): "
+        "W = (μ/2)(I1 − 3) + Σᵢ k1/(2 k2) [exp(k2 (Iᵢ* − 1)²) − 1] over two fibre families i = 1, 2, "
+        "I1 = C11 + C22 + C33. The families lie in the 1–2 plane at ±β from the circumferential direction 1: "
+        "I4ᵢ = C11 cos²β + C22 sin²β ± 2 C12 cosβ sinβ. Fibre dispersion (Gasser–Ogden–Holzapfel 2006): "
+        "Iᵢ* = κ I1 + (1 − 3κ) I4ᵢ; κ = 0 is no dispersion, κ = 1/3 isotropic. A family carries load in "
+        "tension only (Iᵢ* > 1); otherwise the isotropic ground matrix, μ > 0, carries the load alone. "
+        "Small-strain shear modulus μ.",
+        {required(positive(number("mu", Dimension::pressure, "shear modulus μ of the ground matrix"))),
+         required(at_least(number("k1", Dimension::pressure, "fibre stiffness k1"), 0.0)),
+         required(positive(number("k2", Dimension::dimensionless, "fibre exponential coefficient k2"))),
+         required(at_most(at_least(number("beta", Dimension::angle,
+                                          "fibre angle β from direction 1, between 0 and 90 deg "
+                                          "(write the unit, e.g. `39.98 deg`: a plain number is radians)"),
+                                   0.0),
+                          0.5 * std::numbers::pi * (1.0 + 1e-12))),  // `90 deg` may round above π/2
+         with_default(at_most(at_least(number("kappa", Dimension::dimensionless, "fibre dispersion κ"), 0.0), 1.0 / 3.0),
+                      "0")}},
+    [](const Params& p) -> std::unique_ptr<MembraneMaterial> {
+      return std::make_unique<HgoMaterial>(p.number("mu"), p.number("k1"), p.number("k2"), p.number("beta"),
+                                           p.number("kappa"));
+    }});
+}  // namespace
+
+}  // namespace tunica

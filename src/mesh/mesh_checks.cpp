@@ -1,0 +1,195 @@
+#include "mesh/mesh_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <deque>
+#include <unordered_map>
+
+namespace tunica {
+
+namespace {
+
+/// Element e of the surface as a list of node indices (triangles first, then quads).
+struct ElementView {
+  const SurfaceMesh::Surface& s;
+  int count() const { return static_cast<int>(s.triangles.size() + s.quads.size()); }
+  std::vector<int> nodes(int e) const {
+    const int nt = static_cast<int>(s.triangles.size());
+    if (e < nt) return {s.triangles[e].begin(), s.triangles[e].end()};
+    return {s.quads[e - nt].begin(), s.quads[e - nt].end()};
+  }
+  std::string name(int e) const {
+    const int nt = static_cast<int>(s.triangles.size());
+    return e < nt ? fmt::format("element {} (triangle {})", e, e)
+                  : fmt::format("element {} (quadrilateral {})", e, e - nt);
+  }
+};
+
+std::string node_list(const std::vector<int>& v) {
+  std::string out;
+  for (int k : v) out += (out.empty() ? "" : ", ") + std::to_string(k);
+  return "[" + out + "]";
+}
+
+/// One traversal of an edge by an element: the element, and whether it goes from the
+/// lower to the higher node index.
+struct Use {
+  int element;
+  bool forward;
+};
+
+}  // namespace
+
+std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s) {
+  const ElementView ev{s};
+  const std::string where = "surface '" + s.name + "': ";
+  const long num_nodes = static_cast<long>(mesh.nodes.size());
+  const int ne = ev.count();
+  if (ne == 0) return where + "no elements";
+
+  // 1. Node indices in range and not repeated within an element.
+  for (int e = 0; e < ne; ++e) {
+    const auto v = ev.nodes(e);
+    for (int k : v)
+      if (k < 0 || k >= num_nodes)
+        return where + fmt::format("{} has node index {} outside the mesh (nodes 0 to {}); its nodes are {}",
+                                   ev.name(e), k, num_nodes - 1, node_list(v));
+    for (std::size_t a = 0; a < v.size(); ++a)
+      for (std::size_t b = a + 1; b < v.size(); ++b)
+        if (v[a] == v[b])
+          return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), v[a], node_list(v));
+  }
+
+  // 2. Degenerate elements. The area vector of a polygon x_0 … x_{m−1} is
+  // ½ Σ (x_k − x_0) × (x_{k+1} − x_0) (for a triangle ½ (x1 − x0) × (x2 − x0); for a quad ½ d1 × d2 with the
+  // diagonals d1, d2). The element is degenerate if its area is ≤ 1e-12 × (longest edge)².
+  // A quadrilateral is also refused if one of its corners is flat or re-entrant (corner
+  // triangle area along the element normal ≤ 1e-12 L²): the bilinear map then has a
+  // Jacobian that vanishes or changes sign.
+  for (int e = 0; e < ne; ++e) {
+    const auto v = ev.nodes(e);
+    const int m = static_cast<int>(v.size());
+    Eigen::Vector3d area = Eigen::Vector3d::Zero();
+    double longest2 = 0;
+    for (int k = 0; k < m; ++k) {
+      const Eigen::Vector3d a = mesh.nodes[v[k]] - mesh.nodes[v[0]];  // relative to x_0: no cancellation
+      const Eigen::Vector3d b = mesh.nodes[v[(k + 1) % m]] - mesh.nodes[v[0]];
+      area += 0.5 * a.cross(b);
+      longest2 = std::max(longest2, (b - a).squaredNorm());
+    }
+    const double tol = 1e-12 * longest2;
+    if (!(area.norm() > tol))  // also catches NaN coordinates
+      return where + fmt::format("{} is degenerate (area {:.3g}, longest edge {:.3g}); its nodes are {}", ev.name(e),
+                                 area.norm(), std::sqrt(longest2), node_list(v));
+    if (m == 4) {
+      const Eigen::Vector3d normal = area.normalized();
+      for (int k = 0; k < 4; ++k) {
+        const Eigen::Vector3d& x = mesh.nodes[v[k]];
+        const double corner =
+            0.5 * (mesh.nodes[v[(k + 1) % 4]] - x).cross(mesh.nodes[v[(k + 3) % 4]] - x).dot(normal);
+        if (!(corner > tol))
+          return where + fmt::format("{} is degenerate: its corner at node {} is flat or re-entrant (not a convex "
+                                     "quadrilateral); its nodes are {}",
+                                     ev.name(e), v[k], node_list(v));
+      }
+    }
+  }
+
+  // 3. Edges: map (lower node, higher node) → the elements using it, with the direction.
+  std::unordered_map<long, std::vector<Use>> edges;
+  edges.reserve(static_cast<std::size_t>(2 * ne));
+  auto key = [&](int a, int b) { return static_cast<long>(std::min(a, b)) * num_nodes + std::max(a, b); };
+  for (int e = 0; e < ne; ++e) {
+    const auto v = ev.nodes(e);
+    const int m = static_cast<int>(v.size());
+    for (int k = 0; k < m; ++k) {
+      const int a = v[k], b = v[(k + 1) % m];
+      auto& uses = edges[key(a, b)];
+      uses.push_back({e, a < b});
+      if (uses.size() > 2) {
+        std::string list;
+        for (const auto& u : uses) list += (list.empty() ? "" : ", ") + std::to_string(u.element);
+        return where + fmt::format("the edge between nodes {} and {} is shared by more than two elements ({}): "
+                                   "the surface is not a manifold",
+                                   std::min(a, b), std::max(a, b), list);
+      }
+    }
+  }
+
+  // 4. Consistent orientation. Two elements sharing an edge are consistently oriented
+  // if they traverse it in opposite directions. A breadth-first walk over each connected
+  // patch gives every element its orientation relative to the patch's first element
+  // (flip[e]: reversed); the elements in the minority are reported as inverted (with a
+  // tie, those reversed relative to the first element). A conflict during the walk means
+  // the surface cannot be oriented at all (a Möbius strip).
+  std::vector<int> flip(ne, -1);
+  std::vector<std::vector<int>> adjacency(ne);
+  for (const auto& [k, uses] : edges)
+    if (uses.size() == 2) {
+      adjacency[uses[0].element].push_back(uses[1].element);
+      adjacency[uses[1].element].push_back(uses[0].element);
+    }
+  auto same_direction = [&](int e, int f, int& a, int& b) {  // do e and f traverse a shared edge alike?
+    const auto ve = ev.nodes(e);
+    const auto vf = ev.nodes(f);
+    for (std::size_t i = 0; i < ve.size(); ++i) {
+      const int p = ve[i], q = ve[(i + 1) % ve.size()];
+      for (std::size_t j = 0; j < vf.size(); ++j) {
+        const int r = vf[j], t = vf[(j + 1) % vf.size()];
+        if (p == r && q == t) return a = p, b = q, true;
+        if (p == t && q == r) return a = p, b = q, false;
+      }
+    }
+    return a = b = -1, false;
+  };
+  for (int seed = 0; seed < ne; ++seed) {
+    if (flip[seed] >= 0) continue;
+    std::vector<int> patch{seed};
+    flip[seed] = 0;
+    std::deque<int> queue{seed};
+    while (!queue.empty()) {
+      const int e = queue.front();
+      queue.pop_front();
+      for (int f : adjacency[e]) {
+        int a, b;
+        const int want = flip[e] ^ (same_direction(e, f, a, b) ? 1 : 0);
+        if (flip[f] < 0) {
+          flip[f] = want;
+          patch.push_back(f);
+          queue.push_back(f);
+        } else if (flip[f] != want) {
+          return where + fmt::format("the surface cannot be oriented consistently (a Möbius-like patch): {} and {} "
+                                     "across the edge between nodes {} and {}",
+                                     ev.name(e), ev.name(f), a, b);
+        }
+      }
+    }
+    long reversed = 0;
+    for (int e : patch) reversed += flip[e];
+    const int bad = 2 * reversed <= static_cast<long>(patch.size()) ? 1 : 0;  // the minority's flag
+    std::vector<int> inverted;
+    for (int e : patch)
+      if (flip[e] == bad) inverted.push_back(e);
+    if (inverted.empty()) continue;
+    std::sort(inverted.begin(), inverted.end());
+    const int e = inverted.front();
+    int neighbour = -1, a = -1, b = -1;
+    for (int f : adjacency[e])
+      if (flip[f] != bad) {
+        neighbour = f;
+        same_direction(e, f, a, b);
+        break;
+      }
+    std::string across = neighbour >= 0 ? fmt::format(" (it traverses the edge from node {} to node {} in the same "
+                                                      "direction as its neighbour {})",
+                                                      a, b, ev.name(neighbour))
+                                        : "";
+    return where + fmt::format("{} is inverted: its normal is opposite to its neighbours'{}, so the orientation "
+                               "is not consistent ({} of {} connected elements inverted; nodes {})",
+                               ev.name(e), across, inverted.size(), patch.size(), node_list(ev.nodes(e)));
+  }
+  return "";
+}
+
+}  // namespace tunica

@@ -1,0 +1,277 @@
+#include "mesh/surface_generators.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "io/deck_limits.hpp"
+
+namespace tunica {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+/// Relative tolerance of the node sets on planes. Nodes meant to lie on a plane are
+/// generated with that coordinate exactly 0.0, so any small tolerance selects them
+/// exactly; 1e-12 R is far below the spacing of any mesh within kMaxNodes.
+constexpr double kPlaneTol = 1e-12;
+
+/// cos/sin with the roundoff of values that should be 0 (cos π/2 = 6e-17, sin π = 1e-16)
+/// removed, so that nodes at multiples of 90° lie exactly on the coordinate planes.
+/// A genuine |cos| below 1e-14 would need more than 1e14 divisions around: never.
+double clean(double v) { return std::abs(v) < 1e-14 ? 0.0 : v; }
+
+/// Appends a quad (a, b, c, d counterclockwise about the outward normal) as one quad or
+/// as two triangles, split along a–c or b–d alternately by `parity` (a "union jack"
+/// pattern, which avoids a preferred diagonal direction). Both keep the orientation.
+void add_quad(SurfaceMesh::Surface& s, int a, int b, int c, int d, bool triangles, bool parity) {
+  if (!triangles) {
+    s.quads.push_back({a, b, c, d});
+  } else if (!parity) {
+    s.triangles.push_back({a, b, c});
+    s.triangles.push_back({a, c, d});
+  } else {
+    s.triangles.push_back({a, b, d});
+    s.triangles.push_back({b, c, d});
+  }
+}
+
+/// Node set of all nodes whose coordinate `axis` equals `value` within kPlaneTol·radius;
+/// not added if empty.
+void add_plane_set(SurfaceMesh& m, const std::string& name, int axis, double value, double radius) {
+  std::vector<int> set;
+  for (int i = 0; i < static_cast<int>(m.nodes.size()); ++i)
+    if (std::abs(m.nodes[i](axis) - value) <= kPlaneTol * radius) set.push_back(i);
+  if (!set.empty()) m.node_sets[name] = std::move(set);
+}
+
+/// Equal-angle gnomonic coordinate on the cube [−1, 1]: u(a) = tan(α0 + a (α1 − α0)/n).
+/// Values are made exactly antisymmetric (u(n − a) = −u(a) for a full face) and exact at
+/// ±1 and 0, so that nodes on cube edges, symmetry planes and poles are placed exactly.
+std::vector<double> cube_coordinates(int n, bool full_face) {
+  std::vector<double> u(n + 1);
+  if (full_face) {  // α from −π/4 to π/4
+    for (int a = 0; 2 * a <= n; ++a) {
+      const double t = std::tan(-kPi / 4 + (kPi / 2) * a / n);
+      u[a] = t;
+      u[n - a] = -t;
+    }
+    u[0] = -1.0;
+    u[n] = 1.0;
+    if (n % 2 == 0) u[n / 2] = 0.0;
+  } else {  // α from 0 to π/4
+    for (int a = 0; a <= n; ++a) u[a] = std::tan((kPi / 4) * a / n);
+    u[0] = 0.0;
+    u[n] = 1.0;
+  }
+  return u;
+}
+
+/// Cube-projection mesh shared by sphere_mesh and octant_mesh. The lattice points
+/// (i, j, k) ∈ [lo, n]³ lying on the faces listed in `faces` (axis, side: side is 0 for
+/// the lattice value 0 (the −1 face) or n (the +1 face)) are mapped to the cube point
+/// (u_i, u_j, u_k) and projected radially onto the sphere (x = R u/|u|); nodes on cube
+/// edges are shared between faces through a lattice-index map. Each face's quads are
+/// ordered counterclockwise about the outward normal: with in-face axes (e1, e2) chosen
+/// so that e1 × e2 points out of the cube, (a,b), (a+1,b), (a+1,b+1), (a,b+1) is
+/// counterclockwise, and the radial projection from the centre keeps the orientation.
+SurfaceMesh cube_sphere(double radius, int n, bool triangles, bool full) {
+  const std::vector<double> u = cube_coordinates(n, full);
+  SurfaceMesh m;
+  m.surfaces.resize(1);
+  auto& s = m.surfaces[0];
+  s.name = "surface";
+  const long side = n + 1;
+  std::unordered_map<long, int> index;
+  const long expected = full ? 6L * n * n + 2 : 3L * n * n + 3L * n + 1;
+  index.reserve(static_cast<std::size_t>(expected));
+  m.nodes.reserve(static_cast<std::size_t>(expected));
+  auto node = [&](const std::array<int, 3>& l) {
+    const long key = (l[0] * side + l[1]) * side + l[2];
+    auto [it, inserted] = index.emplace(key, static_cast<int>(m.nodes.size()));
+    if (inserted) {
+      const Eigen::Vector3d c(u[l[0]], u[l[1]], u[l[2]]);
+      Eigen::Vector3d x = c * (radius / c.norm());
+      for (int d = 0; d < 3; ++d)
+        if (c(d) == 0.0) x(d) = 0.0;  // exactly on the symmetry plane (also no −0.0)
+      // A point with two zero cube coordinates lies exactly on an axis: (0, 0, ±R).
+      m.nodes.push_back(x);
+    }
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int sgn : {+1, -1}) {
+      if (!full && sgn < 0) continue;  // octant: only the faces x = 1, y = 1, z = 1
+      const int e1 = sgn > 0 ? (axis + 1) % 3 : (axis + 2) % 3;
+      const int e2 = sgn > 0 ? (axis + 2) % 3 : (axis + 1) % 3;
+      const int fixed = sgn > 0 ? n : 0;
+      for (int b = 0; b < n; ++b) {
+        for (int a = 0; a < n; ++a) {
+          auto at = [&](int p, int q) {
+            std::array<int, 3> l{};
+            l[axis] = fixed;
+            l[e1] = p;
+            l[e2] = q;
+            return node(l);
+          };
+          add_quad(s, at(a, b), at(a + 1, b), at(a + 1, b + 1), at(a, b + 1), triangles, (a + b) % 2 != 0);
+        }
+      }
+    }
+  }
+  return m;
+}
+
+void require(bool ok, const char* what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+}  // namespace
+
+SurfaceMesh tube_mesh(double radius, double length, double sector, int around, int along, bool triangles) {
+  require(radius > 0 && length > 0, "tube_mesh: radius and length must be positive");
+  require(sector > 0 && sector <= 2 * kPi * (1 + 1e-9), "tube_mesh: sector must be in (0, 2π]");
+  const bool closed = std::abs(sector - 2 * kPi) <= 1e-9 * 2 * kPi;
+  require(along >= 1 && around >= (closed ? 3 : 1), "tube_mesh: too few elements");
+  require(static_cast<long>(closed ? around : around + 1) * (along + 1) <= kMaxNodes, "tube_mesh: too many nodes");
+  if (closed) sector = 2 * kPi;
+  // Columns of nodes at θ_i = sector·i/around; the closed tube has no column at 2π
+  // (its last elements use column 0 again: the seam shares nodes).
+  const int columns = closed ? around : around + 1;
+  SurfaceMesh m;
+  m.nodes.reserve(static_cast<std::size_t>(columns) * (along + 1));
+  for (int j = 0; j <= along; ++j) {
+    const double z = j == along ? length : length * j / along;
+    for (int i = 0; i < columns; ++i) {
+      const double theta = i == around ? sector : sector * i / around;
+      m.nodes.emplace_back(radius * clean(std::cos(theta)), radius * clean(std::sin(theta)), z);
+    }
+  }
+  m.surfaces.resize(1);
+  auto& s = m.surfaces[0];
+  s.name = "surface";
+  auto id = [&](int i, int j) { return j * columns + (i % columns); };
+  // Parametrization x(θ, z) = (R cos θ, R sin θ, z): x_θ × x_z = R (cos θ, sin θ, 0) is the
+  // outward normal, so increasing θ then increasing z is counterclockwise seen from outside.
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i)
+      add_quad(s, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), triangles, (i + j) % 2 != 0);
+  auto& bottom = m.node_sets["bottom"];
+  auto& top = m.node_sets["top"];
+  for (int i = 0; i < columns; ++i) {
+    bottom.push_back(id(i, 0));
+    top.push_back(id(i, along));
+  }
+  if (!closed) {
+    auto& start = m.node_sets["start"];
+    auto& end = m.node_sets["end"];
+    for (int j = 0; j <= along; ++j) {
+      start.push_back(id(0, j));
+      end.push_back(id(around, j));
+    }
+  }
+  add_plane_set(m, "x0", 0, 0.0, radius);
+  add_plane_set(m, "y0", 1, 0.0, radius);
+  return m;
+}
+
+SurfaceMesh sphere_mesh(double radius, int n, bool triangles) {
+  require(radius > 0, "sphere_mesh: radius must be positive");
+  require(n >= 1 && 6L * n * n + 2 <= kMaxNodes, "sphere_mesh: n out of range");
+  SurfaceMesh m = cube_sphere(radius, n, triangles, true);
+  for (auto [name, z] : {std::pair<const char*, double>{"north", radius}, {"south", -radius}}) {
+    std::vector<int> set;  // a pole node exists for even n (the centre of the ±z face)
+    for (int i = 0; i < static_cast<int>(m.nodes.size()); ++i)
+      if (m.nodes[i](0) == 0.0 && m.nodes[i](1) == 0.0 && m.nodes[i](2) == z) set.push_back(i);
+    if (!set.empty()) m.node_sets[name] = std::move(set);
+  }
+  add_plane_set(m, "equator", 2, 0.0, radius);
+  return m;
+}
+
+SurfaceMesh octant_mesh(double radius, int n, bool triangles) {
+  require(radius > 0, "octant_mesh: radius must be positive");
+  require(n >= 1 && 3L * n * n + 3L * n + 1 <= kMaxNodes, "octant_mesh: n out of range");
+  SurfaceMesh m = cube_sphere(radius, n, triangles, false);
+  add_plane_set(m, "x0", 0, 0.0, radius);
+  add_plane_set(m, "y0", 1, 0.0, radius);
+  add_plane_set(m, "z0", 2, 0.0, radius);
+  for (int i = 0; i < static_cast<int>(m.nodes.size()); ++i)
+    if (m.nodes[i](0) == 0.0 && m.nodes[i](1) == 0.0) m.node_sets["pole"] = {i};
+  return m;
+}
+
+namespace {
+
+const ParamSpec kRadius = required(positive(number("radius", Dimension::length, "radius")));
+const ParamSpec kShape = with_default(
+    one_of(text("shape", "element shape: quadrilaterals, or each split into two triangles"), {"quad", "triangle"}),
+    "quad");
+const ParamSpec kN = required(at_most(at_least(integer("n", "elements along each edge of a cube face"), 1), 1e7));
+
+bool triangles(const Params& p) { return p.text("shape") == "triangle"; }
+
+/// Refuses n whose mesh would exceed kMaxNodes, before anything is allocated.
+int checked_n(const Params& p, long nodes_per_n(long)) {
+  const long n = p.integer("n");
+  const long nodes = nodes_per_n(n);
+  if (nodes > kMaxNodes)
+    p.fail("n", fmt::format("n = {} would make {} nodes (at most {} are allowed)", n, nodes, kMaxNodes));
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+const std::map<std::string, SurfaceGeneratorType>& surface_generator_types() {
+  static const std::map<std::string, SurfaceGeneratorType> types = {
+      {"tube",
+       {ComponentSpec{
+            "mesh", "tube",
+            "Circular tube about the z axis from z = 0 to z = `length` over the angle sector [0, `sector`] "
+            "(360 deg: the closed tube). Node sets: `bottom`, `top`; `start`, `end` (θ = 0, θ = sector) for an "
+            "open sector; `x0`, `y0` (nodes on the planes x = 0, y = 0) where there are any.",
+            {kRadius, required(positive(number("length", Dimension::length, "length along z"))),
+             with_default(at_most(positive(number("sector", Dimension::angle, "angle spanned (360 deg: closed tube)")),
+                                  2 * kPi * (1 + 1e-9)),
+                          "360 deg"),
+             required(at_most(at_least(integer("around", "elements around (>= 3 for the closed tube)"), 1), 1e7)),
+             required(at_most(at_least(integer("along", "elements along z"), 1), 1e7)), kShape}},
+        [](const Params& p) {
+          const double sector = p.number("sector");
+          const long around = p.integer("around"), along = p.integer("along");
+          const bool closed = std::abs(sector - 2 * kPi) <= 1e-9 * 2 * kPi;
+          if (closed && around < 3) p.fail("around", "a closed tube needs at least 3 elements around");
+          const long nodes = (closed ? around : around + 1) * (along + 1);
+          if (nodes > kMaxNodes)
+            p.fail("around", fmt::format("{} × {} elements would make {} nodes (at most {} are allowed)", around,
+                                         along, nodes, kMaxNodes));
+          return tube_mesh(p.number("radius"), p.number("length"), sector, static_cast<int>(around),
+                           static_cast<int>(along), triangles(p));
+        }}},
+      {"sphere",
+       {ComponentSpec{"mesh", "sphere",
+                      "Whole sphere about the origin: the six faces of a cube projected onto it (n × n elements "
+                      "per face, equal angles). Node sets: `north`, `south` (the poles ±z) and `equator` (z = 0), "
+                      "for even n only.",
+                      {kRadius, kN, kShape}},
+        [](const Params& p) {
+          const int n = checked_n(p, [](long k) { return 6 * k * k + 2; });
+          return sphere_mesh(p.number("radius"), n, triangles(p));
+        }}},
+      {"octant",
+       {ComponentSpec{"mesh", "octant",
+                      "The octant x, y, z ≥ 0 of a sphere about the origin: three cube-projection patches of "
+                      "n × n elements. Node sets: `x0`, `y0`, `z0` (the symmetry planes) and `pole` (the node on +z).",
+                      {kRadius, kN, kShape}},
+        [](const Params& p) {
+          const int n = checked_n(p, [](long k) { return 3 * k * k + 3 * k + 1; });
+          return octant_mesh(p.number("radius"), n, triangles(p));
+        }}},
+  };
+  return types;
+}
+
+}  // namespace tunica

@@ -1,0 +1,124 @@
+// Bad 3-D meshes and 3-D deck mistakes get clear errors through the real CLI
+// (`tunica check`): exit 2, one line naming the file and the key, no crash.
+// Meshes are small hand-written Gmsh 2.2 files: a unit square of two triangles
+// in the plane z = 0, broken in one way per test.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / ("tunica-bad-meshes-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// A Gmsh 2.2 mesh: nodes 1–5 ((0,0), (1,0), (1,1), (0,1), (2,0) in z = 0), the given
+/// triangles on physical surface 1 "wall", and physical curve 10 "edge" (line 1–2).
+std::string msh(const std::string& triangles, int count) {
+  return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 10 \"edge\"\n2 1 \"wall\"\n$EndPhysicalNames\n"
+         "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 2 0 0\n$EndNodes\n$Elements\n" +
+         std::to_string(count + 1) + "\n1 1 2 10 1 1 2\n" + triangles + "$EndElements\n";
+}
+
+const std::string kGood = "2 2 2 1 1 1 2 3\n3 2 2 1 1 1 3 4\n";
+
+const char* kDeck = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+  fung: {type: fung, c: 0.05, a1: 1, a2: 1, a4: 0}
+parts:
+  wall:
+    element: membrane
+    material: rubber
+    thickness: 0.1 mm
+    mesh: {type: gmsh, file: square.msh, surface: wall}
+boundary:
+  fixed: {node_set: edge, dofs: [x, y, z]}
+loads:
+  p: {type: pressure, part: wall}
+steps:
+  - {increments: 1, set: {p: 0.001}}
+)";
+
+/// Writes the mesh and the deck (with `from` replaced by `to`), runs `tunica check`, expects
+/// exit 2 and one line holding the key and `what`.
+void expect_error(const std::string& name, const std::string& mesh, const std::string& from, const std::string& to,
+                  const std::string& key, const std::string& what) {
+  const fs::path dir = scratch() / name;
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << mesh;
+  const std::string deck_text = from.empty() ? std::string(kDeck) : replace(kDeck, from, to);
+  std::ofstream(dir / "deck.yaml") << deck_text;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
+  EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
+}
+
+}  // namespace
+
+TEST(BadMeshes, TheGoodSquareIsValid) {
+  const fs::path dir = scratch() / "good";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << msh(kGood, 2);
+  std::ofstream(dir / "deck.yaml") << kDeck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("4 node(s), 2 element(s)"), std::string::npos) << o.output;
+}
+
+TEST(BadMeshes, InvertedElementIsNamed) {
+  expect_error("inverted", msh("2 2 2 1 1 1 2 3\n3 2 2 1 1 1 4 3\n", 2), "", "", "parts.wall.mesh.surface", "inverted");
+}
+
+TEST(BadMeshes, DegenerateElementIsNamed) {
+  expect_error("degenerate", msh(kGood + "4 2 2 1 1 1 2 5\n", 3), "", "", "parts.wall.mesh.surface", "degenerate");
+}
+
+TEST(BadMeshes, MissingPhysicalSurfaceIsNamed) {
+  expect_error("missing-surface", msh(kGood, 2), "surface: wall}", "surface: vessel}", "parts.wall.mesh.surface",
+               "no physical surface 'vessel' (it has: wall)");
+}
+
+TEST(BadMeshes, MissingMeshFileIsNamed) {
+  expect_error("missing-file", msh(kGood, 2), "file: square.msh", "file: nowhere.msh", "parts.wall.mesh.file",
+               "nowhere.msh");
+}
+
+TEST(BadMeshes, FrameDirectionNormalToTheSurfaceIsRefused) {
+  expect_error("normal-frame", msh(kGood, 2), "    mesh: {type: gmsh",
+               "    frame: {type: vector, direction: [0, 0, 1]}\n    mesh: {type: gmsh", "parts.wall.frame",
+               "normal to the surface");
+}
+
+TEST(BadMeshes, AnisotropicMaterialNeedsAFrame) {
+  expect_error("no-frame", msh(kGood, 2), "material: rubber", "material: fung", "parts.wall.frame", "anisotropic");
+}
+
+TEST(BadMeshes, AxisymmetricDofNamesAreRefusedIn3d) {
+  expect_error("dof-r", msh(kGood, 2), "dofs: [x, y, z]", "dofs: [r, z]", "boundary.fixed.dofs[0]", "3-D DOFs are x, y and z");
+}
+
+TEST(BadMeshes, AxisymmetricAnd3dPartsDoNotMix) {
+  expect_error("mixed", msh(kGood, 2), "boundary:",
+               "  tube:\n    element: axisymmetric_membrane\n    material: rubber\n    thickness: 0.1\n"
+               "    mesh: {type: line, from: [1, 0], to: [1, 1], elements: 2}\nboundary:",
+               "parts.tube.element", "cannot be mixed");
+}
+
+TEST(BadMeshes, VolumeControlOfAnUndefinedLoad) {
+  expect_error("volume-control", msh(kGood, 2), "{increments: 1, set: {p: 0.001}}",
+               "{increments: 1, volume_control: {load: q, volume: 1}}", "steps[0].volume_control.load", "undefined pressure load 'q'");
+}
