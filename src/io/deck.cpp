@@ -96,6 +96,9 @@ const ComponentSpec& solver_spec() {
                     "1e-15"),
        with_default(at_most(at_least(integer("max_cutbacks", "times an increment may be halved and retried"), 0), 30),
                     "5"),
+       with_default(boolean("line_search", "halve a Newton correction that raises ‖R‖ or inverts an element, up to 8 "
+                                           "times (never under volume control)"),
+                    "true"),
        with_default(one_of(text("linear_solver", "sparse direct solver"), {"umfpack", "sparse_lu"}), "umfpack")}};
   return s;
 }
@@ -164,6 +167,7 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
     if (key == "energy_tolerance") base.energy_tolerance = p.number(key);
     if (key == "max_cutbacks") base.max_cutbacks = static_cast<int>(p.integer(key));
     if (key == "linear_solver") base.linear_solver = p.text(key);
+    if (key == "line_search") base.line_search = p.boolean(key);
   }
   return base;
 }

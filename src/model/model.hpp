@@ -95,6 +95,7 @@ struct SolverSettings {
   double residual_tolerance = 1e-9;  ///< on ‖R‖/‖R₀‖
   double energy_tolerance = 1e-15;   ///< on |Δu·R| relative to the first iteration
   int max_cutbacks = 5;
+  bool line_search = true;           ///< halve a correction that raises ‖R‖ (up to 8 times)
   std::string linear_solver = "umfpack";
 };
 

@@ -52,11 +52,12 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
                     const VolumeConstraint* constraint) {
   constexpr double kRoundoff = 1e-14;  // ‖R‖ below this fraction of the cancelling forces is round-off
   constexpr double kDivergence = 1e8;  // ‖R‖ above this multiple of ‖R₀‖ is divergence
+  constexpr int kMaxBacktracks = 8;    // line search: at most 8 halvings (1/256 of the correction)
   NewtonResult result;
   const int nf = system.num_free();
   Eigen::VectorXd R, Rf(nf);
   SparseMatrix K = system.pattern();
-  double r0 = 0, e1 = 0, energy = 0;
+  double r0 = 0, e1 = 0, energy = 0, previous_residual = 0;
   Eigen::VectorXd du;
   // Volume control: constraint residual c = V − target, the bordered matrix and its border vectors.
   SparseMatrix A;
@@ -72,10 +73,28 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     rec.iteration = k;
     double scale = 0;
     const auto t0 = std::chrono::steady_clock::now();
-    try {
-      system.assemble(u, loads, R, &K, &scale);
-    } catch (const std::domain_error& e) {
-      result.failure = e.what();
+    // Backtracking line search: a correction that raises ‖R‖, makes it non-finite or leaves the
+    // admissible states (an inverted element) is halved, up to kMaxBacktracks times. The full
+    // Newton step is always tried first, so quadratic convergence is untouched near a solution.
+    std::string inadmissible;
+    for (double alpha = 1.0;; alpha *= 0.5) {
+      inadmissible.clear();
+      try {
+        system.assemble(u, loads, R, &K, &scale);
+        to_free(R, Rf);
+        rec.residual = Rf.norm();
+      } catch (const std::domain_error& e) {
+        inadmissible = e.what();
+      }
+      const bool worse = !inadmissible.empty() || !std::isfinite(rec.residual) || rec.residual > previous_residual;
+      if (k == 0 || !worse || constraint || !settings.line_search || rec.backtracks == kMaxBacktracks) break;
+      ++rec.backtracks;
+      for (int i = 0; i < system.num_dofs(); ++i)
+        if (system.equation(i) >= 0) u(i) -= 0.5 * alpha * du(system.equation(i));
+      du *= 0.5;  // the correction actually taken
+    }
+    if (!inadmissible.empty()) {
+      result.failure = inadmissible;
       return result;
     }
     if (constraint) {
@@ -84,8 +103,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       to_free(system.pressure_load(u, constraint->load), gfree);
     }
     rec.assembly_seconds = seconds_since(t0);
-    to_free(R, Rf);
-    rec.residual = Rf.norm();
+    previous_residual = rec.residual;
     // Under volume control R₀ is ~0 (only the target moved): the first corrected residual is the yardstick.
     if (k == 0 || (constraint && k == 1)) r0 = std::max(r0, rec.residual);
     if (k > 0) energy = std::abs(du.head(nf).dot(Rf) + (constraint ? du(nf) * c : 0.0));  // last correction · new residual

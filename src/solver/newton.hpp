@@ -16,6 +16,7 @@ struct IterationRecord {
   double relative_residual = 1;  ///< ‖R‖ / ‖R₀‖
   double energy = 0;             ///< |Δu_k · R_k|: last correction against the residual it left
   double relative_energy = 1;    ///< energy / |Δu_1 · R_0|
+  int backtracks = 0;             ///< line-search halvings of the last correction before this residual
   double assembly_seconds = 0;
   double solve_seconds = 0;
 };

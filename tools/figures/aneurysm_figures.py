@@ -59,13 +59,13 @@ def main(result_dir, out_dir):
     ax.set_ylim(mid[1] - half, mid[1] + half)
     ax.set_zlim(mid[2] - half, mid[2] + half)
     ax.set_box_aspect((1, 1, 1))
-    ax.view_init(elev=12, azim=-90)
+    ax.view_init(elev=15, azim=60)  # from the cut side (+y): the inner surface of the y ≤ 0 half
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
     ax.set_zlabel("z (mm)")
     sm = plt.cm.ScalarMappable(norm=norm, cmap="viridis")
     fig.colorbar(sm, ax=ax, shrink=0.7, label="max. principal Cauchy stress (kPa)")
-    ax.set_title("Fusiform aneurysm at %.0f mmHg (half wall shown)" % h["pressure_mmHg"][-1])
+    ax.set_title("Fusiform aneurysm at %.0f mmHg (wall cut open at y = 0)" % h["pressure_mmHg"][-1])
     fig.savefig(os.path.join(out_dir, "aneurysm-stress.png"), dpi=150, bbox_inches="tight")
     plt.close(fig)
 
