@@ -5,7 +5,9 @@
 #    against the thin-tube closed form;
 #  - runs examples/balloon-sphere.yaml into results/balloon-sphere, and copies of it
 #    with 10, 20, 40, 80 and 160 elements into results/balloon-sphere-convergence/elements-N,
-#    and plots them against the thin-sphere closed form.
+#    and plots them against the thin-sphere closed form;
+#  - runs examples/balloon-sphere-3d.yaml (volume control through the pressure maximum)
+#    and examples/aneurysm.yaml, and draws their figures.
 #   TUNICA=path/to/tunica   use that binary instead of ./build/tunica (no build)
 #   PYTHON=path/to/python3  interpreter with matplotlib and numpy (default: Debian's /usr/bin/python3)
 set -euo pipefail
@@ -34,3 +36,9 @@ for n in 10 20 40 80 160; do
   "$tunica" run "$deck" -o "$conv/elements-$n" -q
 done
 "$python" tools/figures/balloon_figures.py results/balloon-sphere docs/figures "$conv"
+
+"$tunica" run examples/balloon-sphere-3d.yaml -o results/balloon-sphere-3d -q
+"$python" tools/figures/sphere3d_figures.py results/balloon-sphere-3d docs/figures
+
+"$tunica" run examples/aneurysm.yaml -o results/aneurysm -q
+"$python" tools/figures/aneurysm_figures.py results/aneurysm docs/figures
