@@ -292,7 +292,8 @@ SurfaceMesh read_gmsh(const std::string& path, const std::string& direction_view
   // Physical curves and points: all nodes of their entities, with the nodes bounding
   // them (includeBoundary) and those of their elements (for files without topology),
   // restricted to nodes of the physical surfaces (others are dropped from the mesh).
-  for (const auto& [dim, tag] : groups) {
+  for (const auto& [group_dim, tag] : groups) {
+    const int dim = group_dim;  // a plain variable: lambdas may not capture bindings before C++20 in clang 14
     if (dim != 0 && dim != 1) continue;
     const std::string name = group_name(dim, tag);
     std::vector<int>& set = mesh.node_sets[name];
