@@ -1,5 +1,6 @@
 // The `tunica` command line: run, check, reference and fit.
 #include <CLI/CLI.hpp>
+#include <omp.h>
 #include <fmt/format.h>
 
 #include <chrono>
@@ -99,6 +100,10 @@ int main(int argc, char** argv) {
     if (out_opt->count() == 0 && restart_opt->count() == 0) throw CLI::RequiredError("-o,--output or --restart");
   });
   run_cmd->add_flag("-q,--quiet", quiet, "no progress output");
+  int threads = 0;
+  run_cmd->add_option("-j,--threads", threads, "threads of the element loops (default: OMP_NUM_THREADS or all cores); "
+                                              "results do not depend on it")
+      ->check(CLI::Range(1, 1024));
   auto* check_cmd = app.add_subcommand("check", "validate a deck without solving");
   check_cmd->add_option("deck", deck, "YAML deck")->required();
   auto* ref_cmd = app.add_subcommand("reference", "print the deck reference (Markdown), generated from the declarations");
@@ -133,7 +138,10 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kInputErrorExit;
   }
   try {
-    if (*run_cmd) return run(deck, out, restart, quiet);
+    if (*run_cmd) {
+      if (threads > 0) omp_set_num_threads(threads);
+      return run(deck, out, restart, quiet);
+    }
     if (*check_cmd) return check(deck);
     if (*fit_cmd) {
       fit.plot = !no_plot;

@@ -1,7 +1,10 @@
 #include "assembly/system.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
+#include <exception>
 #include <numbers>
 
 #include "elements/axisym_membrane.hpp"
@@ -83,9 +86,70 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
             *pos++ = (i >= 0 && j >= 0) ? position(i, j) : -1;
           }
       }
+      colour_elements(block, model.num_nodes(), data.order, data.colour_start);
       first += block.size();
       blocks_[p].push_back(std::move(data));
     }
+  }
+}
+
+void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start) {
+  const int nen = nodes_per_element(block.kind);
+  std::vector<int> colour(block.size());
+  // used[node]: bit c set if an element of colour 64·word + c already touches the node.
+  int words = 1;
+  std::vector<std::uint64_t> used(static_cast<std::size_t>(num_nodes), 0);
+  int colours = 0;
+  for (int e = 0; e < block.size(); ++e) {
+    const int* en = block.element(e);
+    for (int w = 0;; ++w) {
+      if (w == words) {  // more than 64·words colours (never seen for membranes): widen the masks
+        std::vector<std::uint64_t> wider(static_cast<std::size_t>(num_nodes) * (words + 1), 0);
+        for (int n = 0; n < num_nodes; ++n)
+          for (int k = 0; k < words; ++k) wider[static_cast<std::size_t>(n) * (words + 1) + k] = used[static_cast<std::size_t>(n) * words + k];
+        used.swap(wider);
+        ++words;
+      }
+      std::uint64_t taken = 0;
+      for (int a = 0; a < nen; ++a) taken |= used[static_cast<std::size_t>(en[a]) * words + w];
+      if (~taken == 0) continue;
+      const int c = std::countr_one(taken);
+      for (int a = 0; a < nen; ++a) used[static_cast<std::size_t>(en[a]) * words + w] |= std::uint64_t{1} << c;
+      colour[e] = 64 * w + c;
+      colours = std::max(colours, colour[e] + 1);
+      break;
+    }
+  }
+  start.assign(colours + 1, 0);
+  for (int e = 0; e < block.size(); ++e) ++start[colour[e] + 1];
+  for (int c = 0; c < colours; ++c) start[c + 1] += start[c];
+  order.resize(block.size());
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (int e = 0; e < block.size(); ++e) order[next[colour[e]]++] = e;
+}
+
+template <class Kernel>
+void System::for_each_coloured(const Block& data, Kernel&& kernel) {
+  std::exception_ptr error;
+  int error_element = -1;
+  // Small colours run on one thread: below ~1000 elements the fork/join costs more than it saves.
+  constexpr int kMinParallel = 1024;
+  for (std::size_t c = 0; c + 1 < data.colour_start.size(); ++c) {
+    const int begin = data.colour_start[c], end = data.colour_start[c + 1];
+#pragma omp parallel for schedule(static) if (end - begin >= kMinParallel)
+    for (int k = begin; k < end; ++k) {
+      const int e = data.order[k];
+      try {
+        kernel(e);
+      } catch (...) {
+#pragma omp critical(tunica_assembly_error)
+        if (error_element < 0 || e < error_element) {
+          error = std::current_exception();
+          error_element = e;
+        }
+      }
+    }
+    if (error) std::rethrow_exception(error);
   }
 }
 
@@ -131,23 +195,26 @@ void System::assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pres
   const Part& part = model_.parts[p];
   const ElementBlock& block = part.blocks[b];
   const int* scatter_pos = blocks_[p][b].scatter.data();
-  Eigen::Vector4d f, fp;
-  Eigen::Matrix4d Ke, dfp;
-  AxisymNodes X, x;
-  for (int e = 0; e < block.size(); ++e) {
+  std::vector<double> scale_e(block.size());  // per element: summed in element order, whatever the threads
+  for_each_coloured(blocks_[p][b], [&](int e) {
+    Eigen::Vector4d f, fp;
+    Eigen::Matrix4d Ke, dfp;
+    AxisymNodes X, x;
     const int* en = block.element(e);
     axisym_nodes(model_, en, u, X, x);
     axisym_membrane(X, x, part.thickness, *part.material, f, K ? &Ke : nullptr);
-    scale2 += f.squaredNorm();
+    double s2 = f.squaredNorm();
     if (pressure != 0.0) {
       axisym_pressure(x, pressure, fp, K ? &dfp : nullptr);
-      scale2 += fp.squaredNorm();
+      s2 += fp.squaredNorm();
       f -= fp;
       if (K) Ke -= dfp;
     }
-    if (K) scale2 += Ke.squaredNorm() * (X.col(1) - X.col(0)).squaredNorm();
+    if (K) s2 += Ke.squaredNorm() * (X.col(1) - X.col(0)).squaredNorm();
+    scale_e[e] = s2;
     scatter(en, 2, f, K ? &Ke : nullptr, scatter_pos + 16 * e, R, K);
-  }
+  });
+  for (double s2 : scale_e) scale2 += s2;
 }
 
 template <int N>
@@ -157,27 +224,30 @@ void System::assemble_surface(int p, int b, const Eigen::VectorXd& u, double pre
   const ElementBlock& block = part.blocks[b];
   const Block& data = blocks_[p][b];
   const int* scatter_pos = data.scatter.data();
-  ElementVector<N> f, fp;
-  ElementMatrix<N> Ke, dfp;
-  SurfaceNodes<N> x;
   constexpr int nd = 3 * N;
-  for (int e = 0; e < block.size(); ++e) {
+  std::vector<double> scale_e(block.size());  // per element: summed in element order, whatever the threads
+  for_each_coloured(data, [&](int e) {
+    ElementVector<N> f, fp;
+    ElementMatrix<N> Ke, dfp;
+    SurfaceNodes<N> x;
     const int* en = block.element(e);
     surface_nodes<N>(model_, en, u, x);
     const MembraneReference<N>* ref;
     if constexpr (N == 3) ref = &data.tri[e];
     else ref = &data.quad[e];
     membrane3d<N>(*ref, x, *part.material, f, K ? &Ke : nullptr);
-    scale2 += f.squaredNorm();
+    double s2 = f.squaredNorm();
     if (pressure != 0.0) {
       surface_pressure<N>(x, pressure, fp, K ? &dfp : nullptr);
-      scale2 += fp.squaredNorm();
+      s2 += fp.squaredNorm();
       f -= fp;
       if (K) Ke -= dfp;
     }
-    if (K) scale2 += Ke.squaredNorm() * (model_.X[en[1]] - model_.X[en[0]]).squaredNorm();
+    if (K) s2 += Ke.squaredNorm() * (model_.X[en[1]] - model_.X[en[0]]).squaredNorm();
+    scale_e[e] = s2;
     scatter(en, 3, f, K ? &Ke : nullptr, scatter_pos + nd * nd * e, R, K);
-  }
+  });
+  for (double s2 : scale_e) scale2 += s2;
 }
 
 void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,

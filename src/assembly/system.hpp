@@ -5,6 +5,12 @@
 // reference data of the 3-D elements computed once, and the assembly of the
 // residual R = f_int − f_ext (all DOFs, so reactions can be read) and of
 // K = ∂R/∂u (free DOFs only) from the element and load kernels.
+//
+// Parallel assembly: the elements of each block are coloured once (greedy: no
+// two elements of one colour share a node) and each colour is one OpenMP loop.
+// Elements of a colour touch disjoint entries of R and K, so no locks are
+// needed, and every entry receives its contributions in the same order
+// whatever the number of threads: results are identical bit for bit.
 #include <Eigen/Sparse>
 #include <array>
 #include <vector>
@@ -57,7 +63,14 @@ private:
     std::vector<MembraneReference<3>> tri;
     std::vector<MembraneReference<4>> quad;
     std::vector<int> scatter;  ///< per element, (n·d)² positions in K's value array (−1: not free-free)
+    std::vector<int> order;    ///< element indices, colour by colour
+    std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])
   };
+  /// Runs kernel(e) for every element of a block, colour by colour, in parallel within a colour.
+  /// An exception of a kernel (an inverted element) is rethrown after the loop: the one of
+  /// the lowest element index, so that the message does not depend on the threads.
+  template <class Kernel>
+  static void for_each_coloured(const Block& data, Kernel&& kernel);
   template <int N>
   void assemble_surface(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
                         double& scale2) const;
@@ -72,6 +85,11 @@ private:
   SparseMatrix pattern_;
   std::vector<std::vector<Block>> blocks_;  ///< per part, per block
 };
+
+/// Greedy colouring of elements so that no two of a colour share a node: `order` lists the
+/// elements colour by colour (ascending element index within a colour), colour c being
+/// order[start[c] … start[c+1]).
+void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start);
 
 /// Gauss points per element of a kind.
 constexpr int points_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 1 : 4; }

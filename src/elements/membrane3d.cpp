@@ -99,7 +99,9 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
     if (K) {
       // Material part Bᵀ D B and geometric part (∂N_a/∂s · S ∂N_b/∂s) I₃.
       const Eigen::Matrix<double, 3, 3 * N> DB = m.D * B;
-      K->noalias() += w * (B.transpose() * DB);
+      // lazyProduct: a coefficient-wise fixed-size product (the default for 3N×3×3N would
+      // go through the dynamic-size GEMM kernel, half of this function's cost).
+      K->noalias() += w * B.transpose().lazyProduct(DB);
       Eigen::Matrix2d S2;
       S2 << m.S(0), m.S(2), m.S(2), m.S(1);
       const Eigen::Matrix<double, N, N> Gm = dN * S2 * dN.transpose();

@@ -99,7 +99,16 @@ const ComponentSpec& solver_spec() {
        with_default(boolean("line_search", "halve a Newton correction that raises ‖R‖ or inverts an element, up to 8 "
                                            "times (never under volume control)"),
                     "true"),
-       with_default(one_of(text("linear_solver", "sparse direct solver"), {"umfpack", "sparse_lu"}), "umfpack")}};
+       with_default(one_of(text("linear_solver",
+                                "sparse direct solver: auto = CHOLMOD when the tangent is symmetric (to 1e-12) and "
+                                "positive definite, else UMFPACK"),
+                           {"auto", "cholmod", "umfpack", "sparse_lu"}),
+                    "auto"),
+       with_default(one_of(text("pressure_stiffness",
+                                "follower-pressure load stiffness: exact (consistent, quadratic Newton) or "
+                                "symmetrized, (K + Kᵀ)/2, which CHOLMOD can factorize (ignored under volume control)"),
+                           {"exact", "symmetrized"}),
+                    "exact")}};
   return s;
 }
 
@@ -167,6 +176,7 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
     if (key == "energy_tolerance") base.energy_tolerance = p.number(key);
     if (key == "max_cutbacks") base.max_cutbacks = static_cast<int>(p.integer(key));
     if (key == "linear_solver") base.linear_solver = p.text(key);
+    if (key == "pressure_stiffness") base.symmetrize_pressure_stiffness = p.text(key) == "symmetrized";
     if (key == "line_search") base.line_search = p.boolean(key);
   }
   return base;

@@ -225,6 +225,47 @@ int checked_n(const Params& p, long nodes_per_n(long)) {
 
 }  // namespace
 
+SurfaceMesh staggered_tube_mesh(double radius, double length, int around, int along) {
+  require(radius > 0 && length > 0, "staggered_tube_mesh: radius and length must be positive");
+  require(along >= 1 && around >= 3, "staggered_tube_mesh: too few elements");
+  require(static_cast<long>(around) * (along + 1) <= kMaxNodes, "staggered_tube_mesh: too many nodes");
+  SurfaceMesh m;
+  m.nodes.reserve(static_cast<std::size_t>(around) * (along + 1));
+  for (int j = 0; j <= along; ++j) {
+    const double z = j == along ? length : length * j / along;
+    for (int i = 0; i < around; ++i) {
+      const double theta = 2 * kPi * (i + 0.5 * (j % 2)) / around;
+      m.nodes.emplace_back(radius * clean(std::cos(theta)), radius * clean(std::sin(theta)), z);
+    }
+  }
+  m.surfaces.resize(1);
+  auto& s = m.surfaces[0];
+  s.name = "surface";
+  auto id = [&](int i, int j) { return j * around + (i % around); };
+  // Counterclockwise seen from outside (increasing θ, then z; see tube_mesh). Between an
+  // even ring j and the shifted ring j+1, node (i, j+1) lies above the middle of (i, j)–(i+1, j);
+  // between an odd ring and the unshifted one, node (i+1, j+1) lies above that middle.
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      if (j % 2 == 0) {
+        s.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        s.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        s.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    }
+  auto& bottom = m.node_sets["bottom"];
+  auto& top = m.node_sets["top"];
+  for (int i = 0; i < around; ++i) {
+    bottom.push_back(id(i, 0));
+    top.push_back(id(i, along));
+  }
+  add_plane_set(m, "x0", 0, 0.0, radius);
+  add_plane_set(m, "y0", 1, 0.0, radius);
+  return m;
+}
+
 const std::map<std::string, SurfaceGeneratorType>& surface_generator_types() {
   static const std::map<std::string, SurfaceGeneratorType> types = {
       {"tube",
@@ -238,7 +279,13 @@ const std::map<std::string, SurfaceGeneratorType>& surface_generator_types() {
                                   2 * kPi * (1 + 1e-9)),
                           "360 deg"),
              required(at_most(at_least(integer("around", "elements around (>= 3 for the closed tube)"), 1), 1e7)),
-             required(at_most(at_least(integer("along", "elements along z"), 1), 1e7)), kShape}},
+             required(at_most(at_least(integer("along", "elements along z"), 1), 1e7)),
+             with_default(one_of(text("shape", "element shape: quadrilaterals, each split into two triangles, or "
+                                               "staggered_triangle (closed tube only: rings shifted by half an "
+                                               "element, no coplanar neighbours, so a clamped tube can be loaded "
+                                               "from its stress-free state)"),
+                                 {"quad", "triangle", "staggered_triangle"}),
+                          "quad")}},
         [](const Params& p) {
           const double sector = p.number("sector");
           const long around = p.integer("around"), along = p.integer("along");
@@ -248,6 +295,11 @@ const std::map<std::string, SurfaceGeneratorType>& surface_generator_types() {
           if (nodes > kMaxNodes)
             p.fail("around", fmt::format("{} × {} elements would make {} nodes (at most {} are allowed)", around,
                                          along, nodes, kMaxNodes));
+          if (p.text("shape") == "staggered_triangle") {
+            if (!closed) p.fail("shape", "staggered_triangle needs the closed tube (sector 360 deg)");
+            return staggered_tube_mesh(p.number("radius"), p.number("length"), static_cast<int>(around),
+                                       static_cast<int>(along));
+          }
           return tube_mesh(p.number("radius"), p.number("length"), sector, static_cast<int>(around),
                            static_cast<int>(along), triangles(p));
         }}},

@@ -19,6 +19,15 @@ namespace tunica {
 /// planes x = 0 / y = 0 (sectors of 90°, 180°, ...).
 SurfaceMesh tube_mesh(double radius, double length, double sector, int around, int along, bool triangles);
 
+/// Closed circular tube of triangles whose node rings alternate by half an element
+/// around (θ_i = 2π (i + ½ (j mod 2)) / around on ring j): no two neighbouring
+/// triangles are coplanar, so the unstressed faceted tube has no first-order
+/// inextensional (zero-stiffness) modes, which the union-jack split of coplanar quad
+/// halves has: a clamped tube can then be loaded from its stress-free state.
+/// 2 · around · along triangles; node sets "bottom", "top", and "x0" / "y0" (nodes on
+/// the planes x = 0 / y = 0: on the even rings when around is a multiple of 4).
+SurfaceMesh staggered_tube_mesh(double radius, double length, int around, int along);
+
 /// Whole sphere of the given radius about the origin: the six faces of a cube
 /// projected onto the sphere (quads, n × n per face, equal angles), or each
 /// quad split into two triangles. Node sets: "north" and "south" (the nodes at

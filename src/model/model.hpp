@@ -96,7 +96,10 @@ struct SolverSettings {
   double energy_tolerance = 1e-15;   ///< on |Δu·R| relative to the first iteration
   int max_cutbacks = 5;
   bool line_search = true;           ///< halve a correction that raises ‖R‖ (up to 8 times)
-  std::string linear_solver = "umfpack";
+  std::string linear_solver = "auto";  ///< solver/linear_solver.hpp
+  /// The follower-pressure load stiffness as derived (exact, quadratic Newton) or
+  /// symmetrized, K ← (K + Kᵀ)/2, so that CHOLMOD can factorize it.
+  bool symmetrize_pressure_stiffness = false;
 };
 
 struct Step {

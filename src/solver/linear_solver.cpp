@@ -1,17 +1,24 @@
 #include "solver/linear_solver.hpp"
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseLU>
 #include <Eigen/UmfPackSupport>
+#include <optional>
 #include <stdexcept>
+
+#include "solver/matrix_symmetry.hpp"
 
 namespace tunica {
 
 namespace {
 
-/// Adapter for Eigen's sparse LU-type solvers (same API for UMFPACK and SparseLU).
+/// Adapter for Eigen's sparse direct solvers (same analyzePattern/factorize/solve API).
 template <class Solver>
-class EigenLU final : public LinearSolver {
+class EigenDirect final : public LinearSolver {
 public:
+  explicit EigenDirect(const char* name) : name_(name) {
+    if constexpr (requires(Solver s) { s.cholmod(); }) solver_.cholmod().print = 0;  // failures are reported by us
+  }
   bool factorize(const SparseMatrix& K) override {
     if (!analyzed_) {
       solver_.analyzePattern(K);
@@ -21,17 +28,47 @@ public:
     return solver_.info() == Eigen::Success;
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return solver_.solve(b); }
+  const char* used() const override { return name_; }
 
 private:
   Solver solver_;
   bool analyzed_ = false;
+  const char* name_;
+};
+
+using Cholmod = EigenDirect<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>;
+using Umfpack = EigenDirect<Eigen::UmfPackLU<SparseMatrix>>;
+using SparseLU = EigenDirect<Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>>;
+
+/// CHOLMOD where K is symmetric and positive definite, UMFPACK elsewhere.
+class AutoSolver final : public LinearSolver {
+public:
+  bool factorize(const SparseMatrix& K) override {
+    if (!map_ || map_->nonzeros() != K.nonZeros()) map_.emplace(K);
+    if (map_->symmetric(K, kSymmetryTolerance) && cholmod_.factorize(K)) {
+      active_ = &cholmod_;
+      return true;
+    }
+    active_ = &umfpack_;
+    return umfpack_.factorize(K);
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return active_->solve(b); }
+  const char* used() const override { return active_ ? active_->used() : "auto"; }
+
+private:
+  std::optional<TransposeMap> map_;
+  Cholmod cholmod_{"cholmod"};
+  Umfpack umfpack_{"umfpack"};
+  LinearSolver* active_ = nullptr;
 };
 
 }  // namespace
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
-  if (name == "umfpack") return std::make_unique<EigenLU<Eigen::UmfPackLU<SparseMatrix>>>();
-  if (name == "sparse_lu") return std::make_unique<EigenLU<Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>>>();
+  if (name == "auto") return std::make_unique<AutoSolver>();
+  if (name == "cholmod") return std::make_unique<Cholmod>("cholmod");
+  if (name == "umfpack") return std::make_unique<Umfpack>("umfpack");
+  if (name == "sparse_lu") return std::make_unique<SparseLU>("sparse_lu");
   throw std::invalid_argument("unknown linear solver '" + name + "'");
 }
 

@@ -1,9 +1,12 @@
 #include "solver/newton.hpp"
 
+#include "solver/matrix_symmetry.hpp"
+
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace tunica {
@@ -64,6 +67,9 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
   Eigen::VectorXd gfree(nf), dVfree(nf), dV;
   double c = 0;
   if (constraint) A = bordered_pattern(K);
+  // pressure_stiffness: symmetrized — K ← (K + Kᵀ)/2 (a modified Newton method; not under volume control).
+  std::optional<TransposeMap> symmetrize;
+  if (settings.symmetrize_pressure_stiffness && !constraint) symmetrize.emplace(K);
   const auto to_free = [&](const Eigen::VectorXd& full, Eigen::VectorXd& free) {
     for (int i = 0; i < system.num_dofs(); ++i)
       if (system.equation(i) >= 0) free(system.equation(i)) = full(i);
@@ -138,12 +144,16 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     }
     const auto t1 = std::chrono::steady_clock::now();
     if (constraint) fill_bordered(K, gfree, dVfree, A);
-    if (!solver.factorize(constraint ? A : K)) {
-      rec.solve_seconds = seconds_since(t1);
+    else if (symmetrize) symmetrize->symmetrize(K);
+    const bool regular = solver.factorize(constraint ? A : K);
+    rec.factor_seconds = seconds_since(t1);
+    rec.solver = solver.used();
+    if (!regular) {
       on_iteration(rec);
       result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
       return result;
     }
+    const auto t2 = std::chrono::steady_clock::now();
     if (constraint) {
       Eigen::VectorXd rhs(nf + 1);
       rhs << -Rf, -c;
@@ -151,7 +161,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     } else {
       du = solver.solve(-Rf);
     }
-    rec.solve_seconds = seconds_since(t1);
+    rec.solve_seconds = seconds_since(t2);
     if (!du.allFinite()) {
       on_iteration(rec);
       result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";

@@ -1,0 +1,250 @@
+// tunica-bench: speed of Tunica's Newton iterations on generated 3-D problems
+// (docs/performance.md). Not a test: it times, it does not check beyond the
+// closed form it prints for the sphere.
+//
+//   tunica-bench tube   --triangles N [--increments 6]
+//   tunica-bench sphere --n N        [--increments 10]
+//   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE]
+//
+// tube:   a closed circular Fung tube (the rat aorta of THEORY §5: R = 0.763 mm,
+//         H = 0.122 mm), length 2πR, ends free to slide radially (held on the planes
+//         x = 0 and y = 0 against rigid motion), circumferential/axial frame,
+//         staggered triangles (around = along), stretched axially to λz = 1.3 with
+//         40 mmHg in 4 increments (an in-vivo-like prestretch keeps the wall in tension), then
+//         inflated to 120 mmHg in 6 increments.
+// sphere: the thin neo-Hookean sphere octant of THEORY §7 (R = 1 mm, H = 0.01 mm,
+//         μ = 1 MPa), n × n quads per patch, pressure to the closed-form value at λ = 1.2.
+//
+// Per run it prints the mean time per Newton iteration split into assembly,
+// numeric factorization and solve, the iterations per increment, the peak
+// resident memory, and the floor: one bare numeric factorization of the last
+// tangent with the same solver (its symbolic analysis done beforehand).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "io/deck.hpp"
+#include "solver/analysis.hpp"
+#include "solver/linear_solver.hpp"
+
+namespace {
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;  // kB on Linux
+}
+
+struct Options {
+  std::string problem;
+  long triangles = 10000;
+  int n = 41;
+  int increments = 0;
+  std::string solver = "auto";
+  bool symmetrized = false;
+  int threads = 0;
+  std::string csv;
+};
+
+std::string solver_block(const Options& o) {
+  return fmt::format("solver: {{linear_solver: {}, pressure_stiffness: {}}}\n", o.solver,
+                     o.symmetrized ? "symmetrized" : "exact");
+}
+
+/// Tube deck: around = along so that the split quads are near-square (length 2πR).
+std::string tube_deck(const Options& o, int& around) {
+  around = std::max(4, 4 * static_cast<int>(std::lround(std::sqrt(o.triangles / 2.0) / 4)));  // x0, y0 sets
+  const int incs = o.increments > 0 ? o.increments : 6;
+  return fmt::format(R"(title: bench Fung tube, {0} x {0} split quads
+units: {{length: mm, force: N}}
+materials:
+  aorta: {{type: fung, c: 61.163 kPa, a1: 0.68238, a2: 0.60558, a4: 0.1067}}
+parts:
+  wall:
+    element: membrane
+    material: aorta
+    thickness: 0.122 mm
+    mesh: {{type: tube, radius: 0.763 mm, length: {1} mm, around: {0}, along: {0}, shape: staggered_triangle}}
+    frame: {{type: cylindrical, axis: [0, 0, 1]}}
+boundary:
+  base: {{node_set: wall.bottom, dofs: [z]}}
+  stretch: {{node_set: wall.top, dofs: [z]}}
+  sym_x: {{node_set: wall.x0, dofs: [x]}}
+  sym_y: {{node_set: wall.y0, dofs: [y]}}
+loads:
+  lumen: {{type: pressure, part: wall}}
+{2}steps:
+  - {{name: prestretch, increments: 4, set: {{stretch: {4} mm, lumen: 40 mmHg}}}}
+  - {{name: inflation, increments: {3}, set: {{lumen: 120 mmHg}}}}
+output: {{vtk: false}}
+)",
+                     around, 2 * std::numbers::pi * 0.763, solver_block(o), incs, 0.3 * 2 * std::numbers::pi * 0.763);
+}
+
+double sphere_pressure() {  // THEORY §7: p = 2 μ (H/R)(λ⁻¹ − λ⁻⁷), μ = 1 MPa, H/R = 0.01, λ = 1.2
+  const double l = 1.2;
+  return 2.0 * 1.0 * 0.01 * (1.0 / l - std::pow(l, -7));
+}
+
+std::string sphere_deck(const Options& o) {
+  const int incs = o.increments > 0 ? o.increments : 10;
+  return fmt::format(R"(title: bench neo-Hookean sphere octant n = {0}
+units: {{length: mm, force: N}}
+materials:
+  rubber: {{type: neo_hookean, mu: 1 MPa}}
+parts:
+  balloon:
+    element: membrane
+    material: rubber
+    thickness: 0.01 mm
+    mesh: {{type: octant, radius: 1 mm, n: {0}}}
+boundary:
+  sym_x: {{node_set: balloon.x0, dofs: [x]}}
+  sym_y: {{node_set: balloon.y0, dofs: [y]}}
+  sym_z: {{node_set: balloon.z0, dofs: [z]}}
+loads:
+  inflation: {{type: pressure, part: balloon}}
+{1}steps:
+  - {{name: inflate, increments: {2}, set: {{inflation: {3:.17g}}}}}
+output: {{vtk: false}}
+)",
+                     o.n, solver_block(o), incs, sphere_pressure());
+}
+
+/// Collects the Newton records of the run.
+struct Recorder : tunica::AnalysisObserver {
+  std::vector<tunica::IterationRecord> records;
+  std::vector<int> iterations_per_increment;
+  int cutbacks = 0;
+  void on_iteration(const tunica::IncrementInfo&, const tunica::IterationRecord& r) override { records.push_back(r); }
+  void on_cutback(const tunica::IncrementInfo&, const std::string&) override { ++cutbacks; }
+  void on_increment(const tunica::Analysis&, const tunica::IncrementInfo& i) override {
+    if (i.step > 0) iterations_per_increment.push_back(i.iterations);
+  }
+};
+
+int run(const Options& o) {
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  int around = 0;
+  const std::string deck = o.problem == "tube" ? tube_deck(o, around) : sphere_deck(o);
+  const double t_start = now();
+  const tunica::Model model = tunica::read_deck_text(deck, o.problem + ".yaml");
+  tunica::Analysis analysis(model);
+  const double t_setup = now() - t_start;
+  Recorder rec;
+  const double t_run0 = now();
+  analysis.run(rec);
+  const double t_run = now() - t_run0;
+
+  // Per-iteration times: iterations followed by a solve.
+  double assembly = 0, factor = 0, solve = 0;
+  int solves = 0;
+  std::string used;
+  for (const auto& r : rec.records)
+    if (!r.solver.empty()) {
+      assembly += r.assembly_seconds;
+      factor += r.factor_seconds;
+      solve += r.solve_seconds;
+      ++solves;
+      used = r.solver;
+    }
+  // The floor: one bare numeric factorization of the last tangent with the solver the run used.
+  const tunica::System& system = analysis.system();
+  Eigen::VectorXd R;
+  tunica::SparseMatrix K = system.pattern();
+  system.assemble(analysis.displacement(), analysis.loads(), R, &K);
+  double asym = 0, kmax = 0;
+  {
+    const tunica::SparseMatrix Kt = K.transpose();
+    const tunica::SparseMatrix D = K - Kt;
+    asym = D.coeffs().abs().maxCoeff();
+    kmax = K.coeffs().abs().maxCoeff();
+  }
+  auto bare = tunica::make_linear_solver(used);
+  const double t_sym0 = now();
+  bare->factorize(K);
+  const double t_first = now() - t_sym0;
+  double t_bare = 1e300;
+  for (int k = 0; k < 2; ++k) {
+    const double t0 = now();
+    bare->factorize(K);
+    t_bare = std::min(t_bare, now() - t0);
+  }
+
+  int max_its = 0;
+  for (int i : rec.iterations_per_increment) max_its = std::max(max_its, i);
+  const double per_iteration = (assembly + factor + solve) / solves;
+  long elements = 0;
+  for (const auto& part : model.parts)
+    for (const auto& b : part.blocks) elements += b.size();
+
+  std::string accuracy = "-";
+  if (o.problem == "sphere") {
+    // Mean nodal radius against the closed form: error of p at the λ reached.
+    double r = 0;
+    for (int n = 0; n < model.num_nodes(); ++n) r += (model.X[n] + analysis.displacement().segment<3>(3 * n)).norm();
+    const double l = r / model.num_nodes();
+    const double p_closed = 2.0 * 0.01 * (1.0 / l - std::pow(l, -7));
+    accuracy = fmt::format("{:+.3e}", sphere_pressure() / p_closed - 1.0);
+  }
+  const std::string size = o.problem == "tube" ? fmt::format("{}x{}", around, around) : fmt::format("n={}", o.n);
+  std::printf("%-7s %-9s elements %ld  nodes %d  unknowns %d  nonzeros %ld  threads %d  solver %s%s\n", o.problem.c_str(),
+              size.c_str(), elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
+              omp_get_max_threads(), used.c_str(), o.symmetrized ? " (symmetrized)" : "");
+  std::printf("  tangent asymmetry max|K - K^T| / max|K| = %.2e\n", asym / kmax);
+  std::printf("  increments %zu  Newton iterations %d  max per increment %d  cut-backs %d\n",
+              rec.iterations_per_increment.size(), solves, max_its, rec.cutbacks);
+  std::printf("  per iteration %.4f s = assembly %.4f + factorization %.4f + solve %.4f  (assembly %.1f %%)\n",
+              per_iteration, assembly / solves, factor / solves, solve / solves, 100.0 * assembly / solves / per_iteration);
+  std::printf("  bare factorization %.4f s (first, with symbolic analysis: %.4f s)  iteration / factorization %.2f\n",
+              t_bare, t_first, per_iteration / t_bare);
+  std::printf("  setup %.2f s  run %.2f s  peak RSS %.0f MB  p error vs closed form %s\n", t_setup, t_run, peak_rss_mb(),
+              accuracy.c_str());
+  if (!o.csv.empty()) {
+    const bool header = !std::ifstream(o.csv).good();
+    std::ofstream csv(o.csv, std::ios::app);
+    if (header)
+      csv << "problem,size,elements,nodes,unknowns,nonzeros,threads,solver,symmetrized,increments,iterations,"
+             "max_iterations_per_increment,cutbacks,iteration_s,assembly_s,factor_s,solve_s,bare_factor_s,"
+             "first_factor_s,setup_s,run_s,peak_rss_MB,p_error\n";
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{}\n",
+                       o.problem, size, elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
+                       omp_get_max_threads(), used, o.symmetrized ? 1 : 0, rec.iterations_per_increment.size(), solves,
+                       max_its, rec.cutbacks, per_iteration, assembly / solves, factor / solves, solve / solves, t_bare,
+                       t_first, t_setup, t_run, peak_rss_mb(), accuracy);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tunica-bench: time per Newton iteration on generated 3-D membrane problems"};
+  Options o;
+  app.add_option("problem", o.problem, "tube or sphere")->required()->check(CLI::IsMember({"tube", "sphere"}));
+  app.add_option("--triangles", o.triangles, "tube: about this many triangles")->check(CLI::Range(100L, 100000000L));
+  app.add_option("--n", o.n, "sphere: octant patches of n × n quads")->check(CLI::Range(2, 10000));
+  app.add_option("--increments", o.increments, "load increments (tube 6, sphere 10)")->check(CLI::Range(1, 1000));
+  app.add_option("--solver", o.solver, "linear solver")->check(CLI::IsMember({"auto", "cholmod", "umfpack", "sparse_lu"}));
+  app.add_flag("--symmetrized", o.symmetrized, "symmetrized pressure stiffness");
+  app.add_option("--threads", o.threads, "threads of the element loops")->check(CLI::Range(1, 1024));
+  app.add_option("--csv", o.csv, "append a row to this CSV file");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tunica-bench: %s\n", e.what());
+    return 1;
+  }
+}

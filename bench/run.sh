@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Reproduces the tables and the figure of docs/performance.md:
+#   bash bench/run.sh [--quick]
+# Builds Release (tools/build.sh), runs tunica-bench on the generated Fung tube at
+# 10k, 100k and 1M triangles (6 increments to 120 mmHg) and the neo-Hookean sphere
+# octant (n = 14, 20, 41, 58; 10 increments to λ = 1.2), with 1 and 2 threads and
+# each solver on the mid sizes, appends every run to results/bench/bench.csv, then
+# draws docs/figures/performance-scaling.png and prints the Markdown tables.
+# --quick skips the 1M-triangle tube (about 10 minutes of the whole).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/build.sh >/dev/null
+B=./build/tunica-bench
+mkdir -p results/bench
+CSV=results/bench/bench.csv
+rm -f "$CSV"
+export OMP_NUM_THREADS=2
+for t in 10000 100000; do $B tube --triangles $t --csv "$CSV"; done
+$B tube --triangles 100000 --threads 1 --csv "$CSV"
+$B tube --triangles 100000 --solver umfpack --csv "$CSV"
+$B tube --triangles 100000 --symmetrized --csv "$CSV"
+for n in 14 20 41 58; do $B sphere --n $n --csv "$CSV"; done
+$B sphere --n 41 --solver umfpack --csv "$CSV"
+$B sphere --n 41 --increments 2 --csv "$CSV"
+[ "${1:-}" = "--quick" ] || $B tube --triangles 1000000 --csv "$CSV"
+/usr/bin/python3 bench/plot.py "$CSV" docs/figures/performance-scaling.png
