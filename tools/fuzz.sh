@@ -7,20 +7,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-30}"
-missing=()
-for p in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  sudo_cmd=""; [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
-bash tools/install-deps.sh
-CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTUNICA_FUZZ=ON >/dev/null
-cmake --build build-fuzz -j"$(nproc)"
+bash tools/build-asan.sh
 export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp"
-for harness in build-fuzz/fuzz/*_fuzzer; do
+for harness in build-asan/fuzz/*_fuzzer; do
   name=$(basename "$harness" _fuzzer)
   mkdir -p "build-fuzz/corpus/$name"
   echo "== fuzzing the $name reader for $seconds s"
