@@ -177,7 +177,14 @@ TEST(MembranePatch, NewtonFromPerturbedInteriorNodesConvergesQuadraticallyToTheH
     const auto m = material_from_yaml(yaml);
     Eigen::VectorXd x = exact;
     for (std::size_t i = 0; i < p.X.size(); ++i)
-      if (!p.boundary[i]) x.segment<3>(3 * i) += phi.Q * Eigen::Vector3d(0.06 * u(rng), 0.06 * u(rng), 0) + 0.03 * u(rng) * normal;
+      if (!p.boundary[i]) {
+        // One draw per statement: the evaluation order of function arguments is unspecified
+        // (gcc and clang differ), and the perturbation must not depend on the compiler.
+        const double a = 0.06 * u(rng);
+        const double b = 0.06 * u(rng);
+        const double c = 0.03 * u(rng);
+        x.segment<3>(3 * i) += phi.Q * Eigen::Vector3d(a, b, 0) + c * normal;
+      }
     Eigen::VectorXd f, ff(free.size());
     Eigen::MatrixXd K, Kff(free.size(), free.size());
     assemble(p, exact, *m, f, nullptr);
