@@ -23,6 +23,14 @@ namespace tunica {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+/// The contact state of one slave node of a contact pair (Model::contacts).
+struct ContactNodeState {
+  int node = -1;
+  ContactPoint point;    ///< gap, ε⟨−g_N⟩ (per reference area), normal, ...
+  double force = 0;      ///< normal force ε⟨−g_N⟩ A_s on the node (whole circumference)
+  double pressure = 0;   ///< contact pressure on the current tributary area: force / a_s
+};
+
 /// Current values of the boundary and load amplitudes.
 struct LoadState {
   std::vector<double> boundary;  ///< per Model::boundaries
@@ -46,8 +54,13 @@ public:
   /// `force_scale`, if given, receives a yardstick for round-off in R: sqrt(Σ_e ‖f_int,e‖² +
   /// ‖f_ext,e‖² + (‖K_e‖ L_e)²), the forces that cancel in R and, when K is assembled, the
   /// stiffness × element size that bounds round-off of stresses computed near zero strain.
+  /// Contact pairs add each active slave node's penalty force and 2×2 tangent (slave DOFs only),
+  /// and ‖f_c‖² + (‖K_c‖ |x_s|)² to the yardstick (the gap is a difference of coordinates);
+  /// `active_contacts`, if given, receives the number of active slave nodes.
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
-                double* force_scale = nullptr) const;
+                double* force_scale = nullptr, int* active_contacts = nullptr) const;
+  /// Contact state of every slave node of contact pair `c` at u, in the pair's node order.
+  std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c) const;
   /// External force per unit pressure of load `l` at u (all DOFs): ∂f_ext/∂p.
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& u, int l) const;
   /// Enclosed volume of the surface of load `l` at u (see surface_pressure.hpp; axisymmetric:
@@ -84,6 +97,8 @@ private:
   int num_free_ = 0;
   SparseMatrix pattern_;
   std::vector<std::vector<Block>> blocks_;  ///< per part, per block
+  /// Per contact pair, per slave node: positions of its 2×2 block (rr, rz, zr, zz) in K's values (−1: not free-free).
+  std::vector<std::vector<std::array<int, 4>>> contact_pos_;
 };
 
 /// Greedy colouring of elements so that no two of a colour share a node: `order` lists the

@@ -12,6 +12,7 @@
 
 #include "io/deck_limits.hpp"
 #include "io/deck_surface_parts.hpp"
+#include "contact/axisym_contact.hpp"
 #include "mesh/meridian.hpp"
 
 namespace tunica {
@@ -83,6 +84,49 @@ const ComponentSpec& load_spec() {
   return s;
 }
 
+const ComponentSpec& cylinder_spec() {
+  static const ComponentSpec s{
+      "rigid_surfaces", "cylinder",
+      "Axisymmetric models: a rigid cylinder r = R_c about the z axis, unbounded in z, fixed. The slave "
+      "nodes of a `contact` pair are kept outside it (r ≥ R_c, e.g. a balloon on a catheter) or inside it "
+      "(r ≤ R_c, e.g. a rigid tube around an artery).",
+      {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
+       required(positive(number("radius", Dimension::length, "radius R_c"))),
+       required(one_of(text("side", "the side where the slave nodes belong"), {"outside", "inside"}))}};
+  return s;
+}
+
+const ComponentSpec& polyline_spec() {
+  static const ComponentSpec s{
+      "rigid_surfaces", "polyline",
+      "Axisymmetric models: a rigid open polyline in the (r, z) meridian plane (a surface of revolution), "
+      "fixed. Its contact normal is the direction of travel turned clockwise: order the points so that "
+      "the slave nodes lie on the right of the direction of travel (e.g. from larger to smaller r for a "
+      "plane z = const with the slave above it). Beyond the ends of the chain there is no contact.",
+      {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
+       required(structured("points", "list", "at least 2 points `[r, z]` (lengths), e.g. `[[2 mm, 0], [0.5 mm, 0]]`"))}};
+  return s;
+}
+
+const ComponentSpec& contact_spec() {
+  static const ComponentSpec s{
+      "contact", "",
+      "Axisymmetric models: frictionless penalty contact of the nodes of an axisymmetric membrane (the "
+      "slave) with a rigid surface. Each slave node s stands for its tributary reference area A_s = 2π R_s "
+      "(L_left + L_right)/2 and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = (signed distance to the surface) − "
+      "offset; it is active when g_N < 0. The contact pressure ε⟨−g_N⟩ is per reference area; the outputs "
+      "`contact_pressure` divide the normal force ε⟨−g_N⟩ A_s by the current tributary area.",
+      {required(text("slave", "name of an axisymmetric part, or of a node set of one")),
+       required(text("rigid", "name of a surface in `rigid_surfaces`")),
+       required(positive(number("penalty", Dimension::penalty,
+                                "penalty ε: contact pressure per unit penetration (the penetration is p_c/ε)"))),
+       with_default(at_least(number("offset", Dimension::length,
+                                    "c: contact starts at the distance c from the surface (e.g. half a thickness)"),
+                             0.0),
+                    "0")}};
+  return s;
+}
+
 const ComponentSpec& solver_spec() {
   static const ComponentSpec s{
       "solver", "",
@@ -135,6 +179,7 @@ const ComponentSpec& history_spec() {
       {required(text("quantity", "what to record (see the table of quantities)")),
        text("name", "column name without the unit suffix"), text("part", "part, for element quantities"),
        text("node_set", "node set, for node quantities"), text("load", "load, for `pressure`"),
+       text("contact", "contact pair, for contact quantities"),
        one_of(text("reduce", "how several points combine (default: sum for reactions, mean otherwise)"),
               {"mean", "min", "max", "sum"}),
        text("unit", "output unit (default: the deck's unit of that dimension)")}};
@@ -152,7 +197,8 @@ const ComponentSpec& output_spec() {
 }
 
 const std::vector<std::string> kTopKeys = {"title", "units", "materials", "parts", "node_sets",
-                                           "boundary", "loads", "solver", "steps", "output"};
+                                           "boundary", "loads", "rigid_surfaces", "contact", "solver",
+                                           "steps", "output"};
 
 SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSettings base) {
   if (!node.defined()) return base;
@@ -337,6 +383,92 @@ void read_loads(const DeckNode& deck, Model& m) {
   }
 }
 
+void read_rigid_surfaces(const DeckNode& deck, Model& m) {
+  if (!deck.has("rigid_surfaces")) return;
+  const DeckNode sec = deck["rigid_surfaces"];
+  if (m.geometry != Geometry::axisymmetric)
+    sec.fail("rigid surfaces and contact need an axisymmetric model (parts with element: axisymmetric_membrane)");
+  if (!sec.is_map()) sec.fail("expected a map of rigid surfaces (name: {type: cylinder|polyline, ...})");
+  for (const auto& [name, node] : sec.entries()) {
+    if (!node.is_map()) node.fail("expected a map with `type: cylinder` or `type: polyline`");
+    const std::string type = node.required("type").as_string();
+    RigidSurface r;
+    r.name = name;
+    r.where = node.where();
+    if (type == "cylinder") {
+      const Params p = read_params(node, cylinder_spec(), m.units);
+      r.type = RigidSurface::Type::cylinder;
+      r.cylinder.radius = p.number("radius");
+      r.cylinder.side = p.text("side") == "inside" ? CylinderSide::inside : CylinderSide::outside;
+    } else if (type == "polyline") {
+      read_params(node, polyline_spec(), m.units);
+      r.type = RigidSurface::Type::polyline;
+      const DeckNode pts = node["points"];
+      if (!pts.is_sequence()) pts.fail("expected a list of points [r, z]");
+      const auto items = pts.items();
+      if (items.size() < 2) pts.fail(fmt::format("a polyline needs at least 2 points, got {}", items.size()));
+      r.polyline.points.resize(2, static_cast<Eigen::Index>(items.size()));
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        if (!items[i].is_sequence() || items[i].items().size() != 2) items[i].fail("expected a point [r, z]");
+        for (int c = 0; c < 2; ++c)
+          r.polyline.points(c, static_cast<Eigen::Index>(i)) = read_quantity(items[i].items()[c], Dimension::length, m.units);
+        if (i > 0 && (r.polyline.points.col(i) - r.polyline.points.col(i - 1)).norm() == 0)
+          items[i].fail("a polyline point repeats the previous one (a segment of zero length)");
+      }
+    } else {
+      node["type"].fail("unknown rigid surface type '" + type + "' (known: cylinder, polyline)");
+    }
+    m.rigid_surfaces.push_back(std::move(r));
+  }
+}
+
+void read_contacts(const DeckNode& deck, Model& m) {
+  if (!deck.has("contact")) return;
+  const DeckNode sec = deck["contact"];
+  if (m.geometry != Geometry::axisymmetric)
+    sec.fail("rigid surfaces and contact need an axisymmetric model (parts with element: axisymmetric_membrane)");
+  if (!sec.is_map()) sec.fail("expected a map of contact pairs (name: {slave: ..., rigid: ..., penalty: ...})");
+  for (const auto& [name, node] : sec.entries()) {
+    const Params p = read_params(node, contact_spec(), m.units);
+    ContactPair c;
+    c.name = name;
+    c.where = node.where();
+    c.law.penalty = p.number("penalty");
+    c.law.offset = p.number("offset");
+    const std::string& rigid = p.text("rigid");
+    auto r = std::find_if(m.rigid_surfaces.begin(), m.rigid_surfaces.end(), [&](auto& x) { return x.name == rigid; });
+    if (r == m.rigid_surfaces.end()) p.fail("rigid", "undefined rigid surface '" + rigid + "'");
+    c.rigid = static_cast<int>(r - m.rigid_surfaces.begin());
+    // The slave: a part (all its nodes) or a node set within one part.
+    const std::string& slave = p.text("slave");
+    std::vector<int> wanted;
+    c.part = m.find_part(slave);
+    if (c.part < 0) {
+      const int s = m.find_node_set(slave);
+      if (s < 0) p.fail("slave", "undefined part or node set '" + slave + "'");
+      wanted = m.node_sets[s].nodes;
+      if (wanted.empty()) p.fail("slave", "node set '" + slave + "' is empty");
+      for (std::size_t k = 0; k < m.parts.size() && c.part < 0; ++k)
+        if (std::find(m.parts[k].nodes.begin(), m.parts[k].nodes.end(), wanted.front()) != m.parts[k].nodes.end())
+          c.part = static_cast<int>(k);
+    }
+    const Part& part = m.parts[c.part];
+    if (wanted.empty()) wanted = part.nodes;
+    Eigen::Matrix2Xd chain(2, static_cast<Eigen::Index>(part.nodes.size()));
+    for (std::size_t i = 0; i < part.nodes.size(); ++i) chain.col(static_cast<Eigen::Index>(i)) = m.X[part.nodes[i]].head<2>();
+    const Eigen::VectorXd areas = slave_tributary_areas(chain);
+    for (int n : wanted)
+      if (std::find(part.nodes.begin(), part.nodes.end(), n) == part.nodes.end())
+        p.fail("slave", "the nodes of node set '" + slave + "' are not all on one part");
+    for (std::size_t i = 0; i < part.nodes.size(); ++i)  // meridian order, no duplicates
+      if (std::find(wanted.begin(), wanted.end(), part.nodes[i]) != wanted.end()) {
+        c.nodes.push_back(part.nodes[i]);
+        c.areas.push_back(areas(static_cast<Eigen::Index>(i)));
+      }
+    m.contacts.push_back(std::move(c));
+  }
+}
+
 void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
   const DeckNode steps = deck.required("steps");
   if (!steps.is_sequence() || steps.items().empty()) steps.fail("expected a list of steps");
@@ -399,7 +531,7 @@ void read_output(const DeckNode& deck, Model& m) {
       if (node_dof && m.geometry == Geometry::three_d && last == 'r')
         h.fail("quantity", "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
     }
-    for (const char* key : {"part", "node_set", "load"}) {
+    for (const char* key : {"part", "node_set", "load", "contact"}) {
       if (h.has(key) && q->target != key)
         h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, q->target.empty() ? "no set" : "a " + q->target));
     }
@@ -415,9 +547,16 @@ void read_output(const DeckNode& deck, Model& m) {
       auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& x) { return x.name == l; });
       if (it == m.loads.end()) h.fail("load", "undefined load '" + l + "'");
       r.load = static_cast<int>(it - m.loads.begin());
+    } else if (q->target == "contact") {
+      const std::string& c = h.text("contact");
+      auto it = std::find_if(m.contacts.begin(), m.contacts.end(), [&](auto& x) { return x.name == c; });
+      if (it == m.contacts.end()) h.fail("contact", "undefined contact pair '" + c + "'");
+      r.contact = static_cast<int>(it - m.contacts.begin());
     }
     const bool reaction = r.quantity.rfind("reaction_", 0) == 0;
-    r.reduce = reaction ? Reduce::sum : Reduce::mean;
+    r.reduce = reaction || r.quantity == "contact_force" ? Reduce::sum
+               : r.quantity == "contact_pressure"       ? Reduce::max
+                                                        : Reduce::mean;
     if (h.has("reduce")) {
       const std::string& s = h.text("reduce");
       r.reduce = s == "min" ? Reduce::min : s == "max" ? Reduce::max : s == "sum" ? Reduce::sum : Reduce::mean;
@@ -485,13 +624,19 @@ const std::vector<HistoryQuantity>& history_quantities() {
       {"reaction_x", "node_set", Dimension::force, "3-D: reaction force on prescribed x DOFs"},
       {"reaction_y", "node_set", Dimension::force, "3-D: reaction force on prescribed y DOFs"},
       {"reaction_z", "node_set", Dimension::force, "reaction force on prescribed z DOFs (axisymmetric: whole circumference)"},
+      {"contact_pressure", "contact", Dimension::pressure,
+       "contact pressure at the slave nodes of a contact pair: normal force ε⟨−g_N⟩ A_s over the current tributary "
+       "area (default reduce: max)"},
+      {"contact_force", "contact", Dimension::force,
+       "normal contact force ε⟨−g_N⟩ A_s of the slave nodes, whole circumference (default reduce: sum, the total)"},
   };
   return q;
 }
 
 std::vector<ComponentSpec> deck_sections() {
-  return {units_spec(), part_spec(), frame_spec(), node_set_spec(), boundary_spec(), load_spec(),
-          solver_spec(), step_spec(), output_spec(), history_spec()};
+  return {units_spec(),     part_spec(),   frame_spec(),   node_set_spec(), boundary_spec(),
+          load_spec(),      cylinder_spec(), polyline_spec(), contact_spec(), solver_spec(),
+          step_spec(),      output_spec(), history_spec()};
 }
 
 Model read_deck_text(const std::string& text, const std::string& file) {
@@ -541,6 +686,8 @@ Model read_deck_text(const std::string& text, const std::string& file) {
   read_node_sets(deck, m);
   read_boundaries(deck, m);
   read_loads(deck, m);
+  read_rigid_surfaces(deck, m);
+  read_contacts(deck, m);
   const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
   read_steps(deck, m, solver);
   read_output(deck, m);

@@ -96,6 +96,7 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
                         ", e.g. '" + (dim == Dimension::length     ? "0.122 mm"
                                       : dim == Dimension::pressure ? "61.163 kPa"
                                       : dim == Dimension::force    ? "0.1 N"
+                                      : dim == Dimension::penalty  ? "1e4 N/mm^3"
                                                                    : "90 deg") +
                         "'), got '" + s + "'");
   }

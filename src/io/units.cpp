@@ -61,6 +61,7 @@ const char* dimension_name(Dimension d) {
     case Dimension::pressure: return "pressure (stress)";
     case Dimension::angle: return "angle";
     case Dimension::volume: return "volume";
+    case Dimension::penalty: return "pressure per length";
   }
   return "?";
 }
@@ -78,6 +79,7 @@ std::string UnitSystem::internal_unit(Dimension d) const {
     case Dimension::pressure: return "(" + force_ + ")/(" + length_ + ")^2";
     case Dimension::angle: return "rad";
     case Dimension::volume: return "(" + length_ + ")^3";
+    case Dimension::penalty: return "(" + force_ + ")/(" + length_ + ")^3";
   }
   return "1";
 }
@@ -88,6 +90,7 @@ void UnitSystem::check_unit(const std::string& unit, Dimension d) const {
                           : d == Dimension::pressure ? "Pa"
                           : d == Dimension::angle ? "rad"
                           : d == Dimension::volume ? "m^3"
+                          : d == Dimension::penalty ? "Pa/m"
                                                   : "1";
   convert(1.0, unit, reference, dimension_name(d));
 }
@@ -108,6 +111,7 @@ std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string&
   if (u.empty())
     u = d == Dimension::pressure ? units.force_unit() + "_per_" + units.length_unit() + "2"
         : d == Dimension::volume ? units.length_unit() + "3"
+        : d == Dimension::penalty ? units.force_unit() + "_per_" + units.length_unit() + "3"
                                  : units.internal_unit(d);
   std::string out;
   for (char c : u) {

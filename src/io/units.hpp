@@ -8,7 +8,8 @@
 namespace tunica {
 
 /// The physical dimension a parameter or output quantity carries.
-enum class Dimension { dimensionless, length, force, pressure, angle, volume };
+/// `penalty`: pressure per length (force/length³), the stiffness of a contact penalty law.
+enum class Dimension { dimensionless, length, force, pressure, angle, volume, penalty };
 
 /// Human name of a dimension ("length", "pressure (stress)", ...).
 const char* dimension_name(Dimension d);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/rigid_surface.hpp"
 #include "core/errors.hpp"
 #include "io/units.hpp"
 #include "loads/surface_pressure.hpp"
@@ -82,6 +83,29 @@ struct PressureLoad {
   SourceLocation where;
 };
 
+/// A rigid tool in the (r, z) meridian plane (axisymmetric models): a cylinder r = R_c or an
+/// open polyline (contact/rigid_surface.hpp), fixed.
+struct RigidSurface {
+  std::string name;
+  enum class Type { cylinder, polyline } type = Type::cylinder;
+  RigidCylinder cylinder;
+  RigidPolyline polyline;
+  SourceLocation where;
+};
+
+/// Frictionless penalty contact of the nodes of an axisymmetric membrane (slave) with a rigid
+/// surface: Π = ½ ε ⟨−g_N⟩² A_s per slave node (contact/axisym_contact.hpp).
+struct ContactPair {
+  std::string name;
+  int rigid = -1;               ///< index into Model::rigid_surfaces
+  int part = -1;                ///< the slave part (its reference meridian gives the areas)
+  std::vector<int> nodes;       ///< slave nodes (global numbers, in meridian order)
+  std::vector<double> areas;    ///< their tributary reference areas A_s (slave_tributary_areas on the part)
+  std::vector<double> lengths;  ///< their tributary reference meridian lengths (for the current-area pressure)
+  ContactLaw law;
+  SourceLocation where;
+};
+
 /// Volume control of a step: the pressure of `load` becomes an unknown and the
 /// enclosed volume is ramped from its value at the start of the step to `target`.
 struct VolumeControl {
@@ -116,7 +140,7 @@ enum class Reduce { mean, min, max, sum };
 struct HistoryRequest {
   std::string column;   ///< name with unit suffix
   std::string quantity;
-  int part = -1, node_set = -1, load = -1;
+  int part = -1, node_set = -1, load = -1, contact = -1;
   Reduce reduce = Reduce::mean;
   std::string unit;     ///< output unit ("" = dimensionless)
   Dimension dim = Dimension::dimensionless;
@@ -139,6 +163,8 @@ struct Model {
   std::vector<NodeSet> node_sets;
   std::vector<Boundary> boundaries;
   std::vector<PressureLoad> loads;
+  std::vector<RigidSurface> rigid_surfaces;
+  std::vector<ContactPair> contacts;
   std::vector<Step> steps;
   OutputSettings output;
 

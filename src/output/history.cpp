@@ -71,6 +71,11 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
       v = info.time;
     } else if (r.load >= 0) {
       v = r.quantity == "volume" ? a.loads().volume[r.load] : a.loads().pressure[r.load];
+    } else if (r.contact >= 0) {
+      std::vector<double> vals;
+      for (const auto& c : a.system().contact_states(a.displacement(), r.contact))
+        vals.push_back(r.quantity == "contact_force" ? c.force : c.pressure);
+      v = reduce(vals, r.reduce);
     } else if (r.part >= 0) {
       if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part);
       std::vector<double> vals;

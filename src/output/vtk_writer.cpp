@@ -75,7 +75,8 @@ std::string data_array(const std::string& name, const char* type, int components
 /// each cell field value is repeated `cell_repeat` times (the revolved surface's hoop segments).
 std::string grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
                  const std::vector<std::int64_t>& offsets, const std::vector<std::uint8_t>& types,
-                 const std::vector<double>& displacement, const std::vector<CellField>& cells, int cell_repeat) {
+                 const std::vector<double>& displacement, const std::vector<CellField>& cells, int cell_repeat,
+                 const std::vector<CellField>& point_fields = {}) {
   const std::size_t np = points.size() / 3, nc = offsets.size();
   std::string s =
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
@@ -86,7 +87,15 @@ std::string grid(const std::vector<double>& points, const std::vector<std::int64
   s += data_array("offsets", "Int64", 1, offsets);
   s += data_array("types", "UInt8", 1, types);
   s += "</Cells>\n<PointData Vectors=\"displacement\">\n";
-  s += data_array("displacement", "Float64", 3, displacement) + "</PointData>\n<CellData>\n";
+  s += data_array("displacement", "Float64", 3, displacement);
+  for (const auto& f : point_fields) {  // one value per model node, repeated like the points (cell_repeat)
+    std::vector<double> v;
+    v.reserve(f.values.size() * cell_repeat);
+    for (std::size_t c = 0; c < f.values.size(); c += f.components)
+      for (int k = 0; k < cell_repeat; ++k) v.insert(v.end(), f.values.begin() + c, f.values.begin() + c + f.components);
+    s += data_array(f.name, "Float64", f.components, v);
+  }
+  s += "</PointData>\n<CellData>\n";
   for (const auto& f : cells) {
     std::vector<double> v;
     v.reserve(f.values.size() * cell_repeat);
@@ -100,11 +109,13 @@ std::string grid(const std::vector<double>& points, const std::vector<std::int64
 /// Uniform cells of `nodes_per_cell` nodes and one VTK type.
 std::string uniform_grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
                          int nodes_per_cell, std::uint8_t vtk_type, const std::vector<double>& displacement,
-                         const std::vector<CellField>& cells, int cell_repeat) {
+                         const std::vector<CellField>& cells, int cell_repeat,
+                         const std::vector<CellField>& point_fields = {}) {
   const std::size_t nc = connectivity.size() / nodes_per_cell;
   std::vector<std::int64_t> offsets(nc);
   for (std::size_t c = 0; c < nc; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * nodes_per_cell);
-  return grid(points, connectivity, offsets, std::vector<std::uint8_t>(nc, vtk_type), displacement, cells, cell_repeat);
+  return grid(points, connectivity, offsets, std::vector<std::uint8_t>(nc, vtk_type), displacement, cells, cell_repeat,
+              point_fields);
 }
 
 /// Cell averages of the Gauss-point states of a 3-D model, with the material frame and the Cauchy tensor.
@@ -152,6 +163,20 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
 
 }  // namespace
 
+/// Axisymmetric point fields: the contact pressure (normal force over the current tributary
+/// area, summed over the pairs a node belongs to; 0 off contact) when the model has contact pairs.
+std::vector<CellField> contact_point_fields(const Analysis& a) {
+  const Model& m = a.model();
+  if (m.contacts.empty()) return {};
+  CellField f;
+  f.name = "contact_pressure" + unit_suffix(m.units, Dimension::pressure);
+  f.components = 1;
+  f.values.assign(m.num_nodes(), 0.0);
+  for (std::size_t c = 0; c < m.contacts.size(); ++c)
+    for (const auto& s : a.system().contact_states(a.displacement(), static_cast<int>(c))) f.values[s.node] += s.pressure;
+  return {f};
+}
+
 std::string meridian_vtu(const Analysis& a) {
   const Model& m = a.model();
   const Eigen::VectorXd& u = a.displacement();
@@ -165,7 +190,7 @@ std::string meridian_vtu(const Analysis& a) {
   for (const auto& p : m.parts)
     for (const auto& b : p.blocks)
       for (int e = 0; e < b.size(); ++e) conn.insert(conn.end(), {b.element(e)[0], b.element(e)[1]});
-  return uniform_grid(pts, conn, 2, 3 /*VTK_LINE*/, disp, cell_fields(a), 1);
+  return uniform_grid(pts, conn, 2, 3 /*VTK_LINE*/, disp, cell_fields(a), 1, contact_point_fields(a));
 }
 
 std::string surface_vtu(const Analysis& a, int segments) {
@@ -191,7 +216,7 @@ std::string surface_vtu(const Analysis& a, int segments) {
           conn.insert(conn.end(), {e[0] * segments + j, e[1] * segments + j, e[1] * segments + k, e[0] * segments + k});
         }
       }
-  return uniform_grid(pts, conn, 4, 9 /*VTK_QUAD*/, disp, cell_fields(a), segments);
+  return uniform_grid(pts, conn, 4, 9 /*VTK_QUAD*/, disp, cell_fields(a), segments, contact_point_fields(a));
 }
 
 std::string surface3d_vtu(const Analysis& a) {

@@ -86,7 +86,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     for (double alpha = 1.0;; alpha *= 0.5) {
       inadmissible.clear();
       try {
-        system.assemble(u, loads, R, &K, &scale);
+        system.assemble(u, loads, R, &K, &scale, &rec.active_contacts);
         to_free(R, Rf);
         rec.residual = Rf.norm();
       } catch (const std::domain_error& e) {

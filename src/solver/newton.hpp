@@ -17,6 +17,7 @@ struct IterationRecord {
   double energy = 0;             ///< |Δu_k · R_k|: last correction against the residual it left
   double relative_energy = 1;    ///< energy / |Δu_1 · R_0|
   int backtracks = 0;             ///< line-search halvings of the last correction before this residual
+  int active_contacts = 0;        ///< active contact slave nodes at this residual
   std::string solver;             ///< the linear solver that factorized K (empty: no solve)
   double assembly_seconds = 0;
   double factor_seconds = 0;      ///< numeric factorization (+ symbolic analysis on the first of a step)

@@ -1,0 +1,121 @@
+// Bad input in the `rigid_surfaces` and `contact` sections: each error names the
+// file, the line and the key, exits with 2 and prints one line. The base deck is the
+// rat-aorta example with a rigid sleeve, a rigid polyline and a contact pair added.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kContactSections =
+    "rigid_surfaces:\n"
+    "  sleeve: {type: cylinder, radius: 1.2 mm, side: inside}\n"
+    "  tip: {type: polyline, points: [[2 mm, 0], [0.5 mm, 0]]}\n"
+    "contact:\n"
+    "  wall_sleeve: {slave: wall, rigid: sleeve, penalty: 1e3 N/mm^3, offset: 0.01 mm}\n"
+    "  wall_tip: {slave: wall.start, rigid: tip, penalty: 1e3}\n";
+
+std::string base_deck(const std::string& example = "rat-aorta-inflation.yaml") {
+  return read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/" + example) + kContactSections;
+}
+
+std::string write_deck(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "tunica-bad-contact";
+  fs::create_directories(dir);
+  const fs::path path = dir / (name + ".yaml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+int line_of(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+void expect_error_in(const std::string& name, const std::string& text, const std::string& line_text,
+                  const std::string& key, const std::string& what) {
+  const std::string path = write_deck(name, text);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  const int line = line_of(text, line_text);
+  EXPECT_NE(o.output.find(path + ":" + std::to_string(line) + ":"), std::string::npos)
+      << "expected line " << line << " in: " << o.output;
+  EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
+}
+
+void expect_error(const std::string& name, const std::string& from, const std::string& to, const std::string& key,
+                  const std::string& what) {
+  expect_error_in(name, replace(base_deck(), from, to), to, key, what);
+}
+
+}  // namespace
+
+TEST(BadContact, TheBaseDeckIsValid) {
+  const Outcome o = run_cli("check " + write_deck("valid", base_deck()));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}
+
+TEST(BadContact, UnknownRigidSurface) {
+  expect_error("unknown-rigid", "rigid: sleeve,", "rigid: sleve,", "contact.wall_sleeve.rigid",
+               "undefined rigid surface 'sleve'");
+}
+
+TEST(BadContact, UnknownSlave) {
+  expect_error("unknown-slave", "slave: wall,", "slave: wal,", "contact.wall_sleeve.slave",
+               "undefined part or node set 'wal'");
+}
+
+TEST(BadContact, NegativePenalty) {
+  expect_error("negative-penalty", "penalty: 1e3 N/mm^3", "penalty: -1e3 N/mm^3", "contact.wall_sleeve.penalty",
+               "out of range (must be > 0)");
+}
+
+TEST(BadContact, PenaltyOfTheWrongDimension) {
+  expect_error("penalty-unit", "penalty: 1e3 N/mm^3", "penalty: 1e3 kPa", "contact.wall_sleeve.penalty",
+               "unit 'kPa' is not a pressure per length");
+}
+
+TEST(BadContact, NegativeOffset) {
+  expect_error("negative-offset", "offset: 0.01 mm", "offset: -0.01 mm", "contact.wall_sleeve.offset",
+               "out of range (must be >= 0)");
+}
+
+TEST(BadContact, PolylineWithOnePoint) {
+  expect_error("one-point", "points: [[2 mm, 0], [0.5 mm, 0]]", "points: [[2 mm, 0]]", "rigid_surfaces.tip.points",
+               "a polyline needs at least 2 points, got 1");
+}
+
+TEST(BadContact, CylinderWithoutRadius) {
+  expect_error("no-radius", "{type: cylinder, radius: 1.2 mm, side: inside}", "{type: cylinder, side: inside}",
+               "rigid_surfaces.sleeve.radius", "missing required key 'radius'");
+}
+
+TEST(BadContact, UnknownCylinderSide) {
+  expect_error("bad-side", "side: inside}", "side: within}", "rigid_surfaces.sleeve.side", "within");
+}
+
+TEST(BadContact, UnknownSurfaceType) {
+  expect_error("bad-type", "{type: cylinder,", "{type: cone,", "rigid_surfaces.sleeve.type",
+               "unknown rigid surface type 'cone'");
+}
+
+TEST(BadContact, ContactNeedsAnAxisymmetricModel) {
+  const std::string text = base_deck("rat-aorta-3d.yaml");
+  expect_error_in("three-d", text, "  sleeve: {type: cylinder", "rigid_surfaces", "need an axisymmetric model");
+}
+
+TEST(BadContact, HistoryOfAnUnknownContactPair) {
+  const std::string text = replace(base_deck(), "  history:\n", "  history:\n    - {quantity: contact_force, contact: nope}\n");
+  expect_error_in("history-contact", text, "contact: nope}", "output.history[0].contact", "undefined contact pair 'nope'");
+}
