@@ -5,6 +5,7 @@
 //   tunica-bench tube   --triangles N [--increments 6]
 //   tunica-bench sphere --n N        [--increments 10]
 //   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE]
+//           [--residual-tolerance R] [--energy-tolerance E]   (Newton tests; deck defaults 1e-9, 1e-15)
 //
 // tube:   a closed circular Fung tube (the rat aorta of THEORY §5: R = 0.763 mm,
 //         H = 0.122 mm), length 2πR, ends free to slide radially (held on the planes
@@ -53,13 +54,16 @@ struct Options {
   int increments = 0;
   std::string solver = "auto";
   bool symmetrized = false;
+  double residual_tolerance = 1e-9;  // the deck defaults
+  double energy_tolerance = 1e-15;
   int threads = 0;
   std::string csv;
 };
 
 std::string solver_block(const Options& o) {
-  return fmt::format("solver: {{linear_solver: {}, pressure_stiffness: {}}}\n", o.solver,
-                     o.symmetrized ? "symmetrized" : "exact");
+  return fmt::format(
+      "solver: {{linear_solver: {}, pressure_stiffness: {}, residual_tolerance: {:.3g}, energy_tolerance: {:.3g}}}\n",
+      o.solver, o.symmetrized ? "symmetrized" : "exact", o.residual_tolerance, o.energy_tolerance);
 }
 
 /// Tube deck: around = along so that the split quads are near-square (length 2πR).
@@ -215,12 +219,14 @@ int run(const Options& o) {
     const bool header = !std::ifstream(o.csv).good();
     std::ofstream csv(o.csv, std::ios::app);
     if (header)
-      csv << "problem,size,elements,nodes,unknowns,nonzeros,threads,solver,symmetrized,increments,iterations,"
+      csv << "problem,size,elements,nodes,unknowns,nonzeros,threads,solver,symmetrized,residual_tolerance,"
+             "energy_tolerance,increments,iterations,"
              "max_iterations_per_increment,cutbacks,iteration_s,assembly_s,factor_s,solve_s,bare_factor_s,"
              "first_factor_s,setup_s,run_s,peak_rss_MB,p_error\n";
-    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{}\n",
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{}\n",
                        o.problem, size, elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
-                       omp_get_max_threads(), used, o.symmetrized ? 1 : 0, rec.iterations_per_increment.size(), solves,
+                       omp_get_max_threads(), used, o.symmetrized ? 1 : 0, o.residual_tolerance, o.energy_tolerance,
+                       rec.iterations_per_increment.size(), solves,
                        max_its, rec.cutbacks, per_iteration, assembly / solves, factor / solves, solve / solves, t_bare,
                        t_first, t_setup, t_run, peak_rss_mb(), accuracy);
   }
@@ -238,6 +244,10 @@ int main(int argc, char** argv) {
   app.add_option("--increments", o.increments, "load increments (tube 6, sphere 10)")->check(CLI::Range(1, 1000));
   app.add_option("--solver", o.solver, "linear solver")->check(CLI::IsMember({"auto", "cholmod", "umfpack", "sparse_lu"}));
   app.add_flag("--symmetrized", o.symmetrized, "symmetrized pressure stiffness");
+  app.add_option("--residual-tolerance", o.residual_tolerance, "Newton: ‖R‖/‖R₀‖ (deck default 1e-9)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--energy-tolerance", o.energy_tolerance, "Newton: |Δu·R| relative to the first (deck default 1e-15)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--threads", o.threads, "threads of the element loops")->check(CLI::Range(1, 1024));
   app.add_option("--csv", o.csv, "append a row to this CSV file");
   CLI11_PARSE(app, argc, argv);

@@ -148,6 +148,13 @@ const ComponentSpec& solver_spec() {
                                 "positive definite, else UMFPACK"),
                            {"auto", "cholmod", "umfpack", "sparse_lu"}),
                     "auto"),
+       with_default(one_of(text("predictor",
+                                "first iteration of an increment whose prescribed displacements move: tangent = "
+                                "solve K(u_n) Δu = −R(u_n) − K_fp Δu_p at the last converged state (the prescribed "
+                                "increment applied linearly, Newton then as usual); none = start from u_n with the "
+                                "new prescribed values"),
+                           {"tangent", "none"}),
+                    "tangent"),
        with_default(one_of(text("pressure_stiffness",
                                 "follower-pressure load stiffness: exact (consistent, quadratic Newton) or "
                                 "symmetrized, (K + Kᵀ)/2, which CHOLMOD can factorize (ignored under volume control)"),
@@ -224,6 +231,7 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
     if (key == "linear_solver") base.linear_solver = p.text(key);
     if (key == "pressure_stiffness") base.symmetrize_pressure_stiffness = p.text(key) == "symmetrized";
     if (key == "line_search") base.line_search = p.boolean(key);
+    if (key == "predictor") base.tangent_predictor = p.text(key) == "tangent";
   }
   return base;
 }

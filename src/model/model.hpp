@@ -124,6 +124,9 @@ struct SolverSettings {
   /// The follower-pressure load stiffness as derived (exact, quadratic Newton) or
   /// symmetrized, K ← (K + Kᵀ)/2, so that CHOLMOD can factorize it.
   bool symmetrize_pressure_stiffness = false;
+  /// When prescribed displacements move: the first iteration linearizes their increment at the
+  /// last converged state (solver/newton.hpp) instead of starting from it with the new values.
+  bool tangent_predictor = true;
 };
 
 struct Step {

@@ -94,7 +94,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
       system_.apply_boundary(trial, u);
       const NewtonResult r = newton(system_, *solver, trial, u, step.solver,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
-                                    vc.load >= 0 ? &constraint : nullptr);
+                                    vc.load >= 0 ? &constraint : nullptr, &state_.u);
       if (r.converged) {
         state_.u = u;
         state_.loads = trial;

@@ -48,11 +48,57 @@ void fill_bordered(const SparseMatrix& K, const Eigen::VectorXd& g, const Eigen:
   for (int i = 0; i < nf; ++i) a[k++] = -g(i);
   a[k++] = 0.0;
 }
+/// The tangent predictor (newton.hpp): on success u = u_n + Δu (free) with the new prescribed
+/// values, du the correction, r0 = ‖R_f(u_n) + K_fp Δu_p‖, e1 = |Δu·(that)|, and the record of
+/// iteration 0 reported; on failure u is untouched and false is returned.
+template <class ToFree>
+bool predict(const System& system, LinearSolver& solver, const LoadState& loads, const Eigen::VectorXd& un,
+             Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& R, Eigen::VectorXd& Rf, Eigen::VectorXd& du,
+             double& r0, double& e1, const ToFree& to_free,
+             const std::function<void(const IterationRecord&)>& on_iteration) {
+  const Eigen::VectorXd dp = u - un;  // the prescribed increment (zero on free DOFs)
+  if (dp.size() == 0 || dp.cwiseAbs().maxCoeff() == 0) return false;
+  constexpr double h = 1e-6;
+  IterationRecord rec;
+  const auto t0 = std::chrono::steady_clock::now();
+  const int nf = system.num_free();
+  Eigen::VectorXd Rp, Rm, d(nf);
+  try {
+    system.assemble(un + h * dp, loads, Rp, nullptr);
+    system.assemble(un - h * dp, loads, Rm, nullptr);
+    system.assemble(un, loads, R, &K, nullptr, &rec.active_contacts);
+  } catch (const std::domain_error&) {
+    return false;  // u_n is not admissible under the new loads: start plainly
+  }
+  to_free(R, Rf);
+  to_free(Eigen::VectorXd((Rp - Rm) / (2 * h)), d);
+  const Eigen::VectorXd rhs = -(Rf + d);
+  rec.residual = rhs.norm();
+  rec.assembly_seconds = seconds_since(t0);
+  if (!std::isfinite(rec.residual) || rec.residual == 0) return false;
+  const auto t1 = std::chrono::steady_clock::now();
+  const bool regular = solver.factorize(K);
+  rec.factor_seconds = seconds_since(t1);
+  if (!regular) return false;
+  const auto t2 = std::chrono::steady_clock::now();
+  Eigen::VectorXd step = solver.solve(rhs);
+  rec.solve_seconds = seconds_since(t2);
+  if (!step.allFinite()) return false;
+  rec.solver = solver.used();
+  on_iteration(rec);
+  r0 = rec.residual;
+  e1 = std::abs(step.dot(rhs));
+  du = std::move(step);
+  for (int i = 0; i < system.num_dofs(); ++i)
+    if (system.equation(i) >= 0) u(i) += du(system.equation(i));
+  return true;
+}
+
 }  // namespace
 
 NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
-                    const VolumeConstraint* constraint) {
+                    const VolumeConstraint* constraint, const Eigen::VectorXd* converged) {
   constexpr double kRoundoff = 1e-14;  // ‖R‖ below this fraction of the cancelling forces is round-off
   constexpr double kDivergence = 1e8;  // ‖R‖ above this multiple of ‖R₀‖ is divergence
   constexpr int kMaxBacktracks = 8;    // line search: at most 8 halvings (1/256 of the correction)
@@ -74,7 +120,13 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     for (int i = 0; i < system.num_dofs(); ++i)
       if (system.equation(i) >= 0) free(system.equation(i)) = full(i);
   };
-  for (int k = 0;; ++k) {
+  int first = 0;
+  if (converged && settings.tangent_predictor && !constraint &&
+      predict(system, solver, loads, *converged, u, K, R, Rf, du, r0, e1, to_free, on_iteration)) {
+    previous_residual = r0;
+    first = 1;
+  }
+  for (int k = first;; ++k) {
     IterationRecord rec;
     rec.iteration = k;
     double scale = 0;

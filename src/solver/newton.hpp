@@ -44,8 +44,21 @@ struct VolumeConstraint {
 /// unknown: the bordered system [K −g; ∂V/∂uᵀ 0] [Δu; Δp] = −[R; V − target]
 /// (g = ∂f_ext/∂p) is solved as one sparse matrix, which stays regular at a
 /// pressure maximum, and |V − target| ≤ tol_r |target| is required too.
+///
+/// Tangent predictor (settings.tangent_predictor, no volume constraint): given the last
+/// converged state u_n (`converged`; u differs from it on prescribed DOFs only), the first
+/// correction is not computed at u (where the moved boundary nodes alone have taken the
+/// whole prescribed increment Δu_p, e.g. one ring of elements stretched several-fold) but
+/// linearized at u_n:
+///   K_ff(u_n) Δu_f = −R_f(u_n) − K_fp(u_n) Δu_p,
+/// with the new loads. K_fp Δu_p, the directional derivative of R along Δu_p, is taken by
+/// central differences, (R(u_n + hΔu_p) − R(u_n − hΔu_p))/2h with h = 1e-6 (error
+/// O(h²) ≈ 1e-12 relative; it moves the predictor only, Newton then converges to the exact
+/// solution). Its norm is R₀ (what the plain start's residual is for a linear model), and
+/// the predictor counts as the first iteration. If K(u_n) cannot be factorized or u_n is not
+/// admissible under the new loads, Newton starts plainly from u.
 NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
-                    const VolumeConstraint* constraint = nullptr);
+                    const VolumeConstraint* constraint = nullptr, const Eigen::VectorXd* converged = nullptr);
 
 }  // namespace tunica
