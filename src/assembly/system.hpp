@@ -42,6 +42,7 @@ class System {
 public:
   explicit System(const Model& model);
 
+  const Model& model() const { return model_; }
   int num_dofs() const { return model_.num_dofs(); }
   int num_free() const { return num_free_; }
   /// Equation number of a DOF, −1 if prescribed.

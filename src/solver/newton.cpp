@@ -48,6 +48,56 @@ void fill_bordered(const SparseMatrix& K, const Eigen::VectorXd& g, const Eigen:
   for (int i = 0; i < nf; ++i) a[k++] = -g(i);
   a[k++] = 0.0;
 }
+/// Factorizes M and solves M x = b. If M is singular — the factorization fails, x is not
+/// finite, or x moves a DOF farther than `max_step` (ten times the model's size: a
+/// near-null mode amplified by a tiny pivot) — retries with the diagonal perturbed,
+/// M + δ diag(|M_ii|), δ = 1e-6, 1e-4, 1e-2 in turn (a zero diagonal entry: δ times the largest):
+/// a pivot perturbation as in PARDISO or MUMPS. The residual is untouched, so a converged
+/// state is exact; only the Newton direction changes, in the near-null modes: those of a
+/// membrane without stress (the inextensional modes of a cylinder, an unstressed flat
+/// region), which the stress of the next iterates stiffens. `note` gets "+shift" when the
+/// perturbation was used. False if every attempt fails.
+bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
+                     double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
+                     double& solve_seconds) {
+  note.clear();
+  factor_seconds = solve_seconds = 0;
+  const auto attempt = [&](const SparseMatrix& A) {
+    auto t = std::chrono::steady_clock::now();
+    const bool regular = solver.factorize(A);
+    factor_seconds += seconds_since(t);
+    if (!regular) return false;
+    t = std::chrono::steady_clock::now();
+    x = solver.solve(b);
+    solve_seconds += seconds_since(t);
+    return x.allFinite() && x.cwiseAbs().maxCoeff() <= max_step;
+  };
+  if (attempt(M)) return true;
+  if (!allow_shift) return x.allFinite() && x.size() > 0;  // volume control: keep the plain behaviour
+  note = "+shift";
+  const double largest = M.diagonal().cwiseAbs().maxCoeff();
+  for (double delta : {1e-6, 1e-4, 1e-2}) {
+    SparseMatrix S = M;
+    for (int j = 0; j < S.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(S, j); it; ++it)
+        if (it.row() == j) it.valueRef() += delta * (it.value() != 0 ? std::abs(it.value()) : largest);
+    if (attempt(S)) return true;
+  }
+  return false;
+}
+
+/// Ten times the diagonal of the model's bounding box (current positions do not matter for a
+/// bound this loose): no Newton correction of a sound tangent moves a node that far.
+double step_bound(const System& system) {
+  const Model& m = system.model();
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+  for (const auto& X : m.X) {
+    lo = lo.cwiseMin(X);
+    hi = hi.cwiseMax(X);
+  }
+  return m.X.empty() ? 1e300 : 10.0 * std::max((hi - lo).norm(), 1e-300);
+}
+
 /// The tangent predictor (newton.hpp): on success u = u_n + Δu (free) with the new prescribed
 /// values, du the correction, r0 = ‖R_f(u_n) + K_fp Δu_p‖, e1 = |Δu·(that)|, and the record of
 /// iteration 0 reported; on failure u is untouched and false is returned.
@@ -76,15 +126,11 @@ bool predict(const System& system, LinearSolver& solver, const LoadState& loads,
   rec.residual = rhs.norm();
   rec.assembly_seconds = seconds_since(t0);
   if (!std::isfinite(rec.residual) || rec.residual == 0) return false;
-  const auto t1 = std::chrono::steady_clock::now();
-  const bool regular = solver.factorize(K);
-  rec.factor_seconds = seconds_since(t1);
-  if (!regular) return false;
-  const auto t2 = std::chrono::steady_clock::now();
-  Eigen::VectorXd step = solver.solve(rhs);
-  rec.solve_seconds = seconds_since(t2);
-  if (!step.allFinite()) return false;
-  rec.solver = solver.used();
+  Eigen::VectorXd step;
+  std::string note;
+  if (!solve_perturbed(solver, K, rhs, true, step_bound(system), step, note, rec.factor_seconds, rec.solve_seconds))
+    return false;
+  rec.solver = solver.used() + note;
   on_iteration(rec);
   r0 = rec.residual;
   e1 = std::abs(step.dot(rhs));
@@ -120,6 +166,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     for (int i = 0; i < system.num_dofs(); ++i)
       if (system.equation(i) >= 0) free(system.equation(i)) = full(i);
   };
+  const double bound = step_bound(system);
   int first = 0;
   if (converged && settings.tangent_predictor && !constraint &&
       predict(system, solver, loads, *converged, u, K, R, Rf, du, r0, e1, to_free, on_iteration)) {
@@ -135,7 +182,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     // admissible states (an inverted element) is halved, up to kMaxBacktracks times. The full
     // Newton step is always tried first, so quadratic convergence is untouched near a solution.
     std::string inadmissible;
-    for (double alpha = 1.0;; alpha *= 0.5) {
+    for (;;) {
       inadmissible.clear();
       try {
         system.assemble(u, loads, R, &K, &scale, &rec.active_contacts);
@@ -148,7 +195,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       if (k == 0 || !worse || constraint || !settings.line_search || rec.backtracks == kMaxBacktracks) break;
       ++rec.backtracks;
       for (int i = 0; i < system.num_dofs(); ++i)
-        if (system.equation(i) >= 0) u(i) -= 0.5 * alpha * du(system.equation(i));
+        if (system.equation(i) >= 0) u(i) -= 0.5 * du(system.equation(i));  // back to half the correction taken so far
       du *= 0.5;  // the correction actually taken
     }
     if (!inadmissible.empty()) {
@@ -194,27 +241,18 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       result.failure = fmt::format("no convergence in {} iterations", settings.max_iterations);
       return result;
     }
-    const auto t1 = std::chrono::steady_clock::now();
     if (constraint) fill_bordered(K, gfree, dVfree, A);
     else if (symmetrize) symmetrize->symmetrize(K);
-    const bool regular = solver.factorize(constraint ? A : K);
-    rec.factor_seconds = seconds_since(t1);
-    rec.solver = solver.used();
-    if (!regular) {
-      on_iteration(rec);
-      result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
-      return result;
-    }
-    const auto t2 = std::chrono::steady_clock::now();
-    if (constraint) {
-      Eigen::VectorXd rhs(nf + 1);
-      rhs << -Rf, -c;
-      du = solver.solve(rhs);
-    } else {
-      du = solver.solve(-Rf);
-    }
-    rec.solve_seconds = seconds_since(t2);
-    if (!du.allFinite()) {
+    Eigen::VectorXd rhs(constraint ? nf + 1 : nf);
+    if (constraint) rhs << -Rf, -c;
+    else rhs = -Rf;
+    std::string note;
+    // No perturbation of the bordered volume-control matrix (its last diagonal entry is 0 by design).
+    const bool solved = solve_perturbed(solver, constraint ? A : K, rhs, !constraint, bound, du, note,
+                                        rec.factor_seconds, rec.solve_seconds);
+    rec.solver = solver.used() + note;
+    if (!note.empty()) ++result.perturbed;
+    if (!solved) {
       on_iteration(rec);
       result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
       return result;

@@ -18,7 +18,8 @@ struct IterationRecord {
   double relative_energy = 1;    ///< energy / |Δu_1 · R_0|
   int backtracks = 0;             ///< line-search halvings of the last correction before this residual
   int active_contacts = 0;        ///< active contact slave nodes at this residual
-  std::string solver;             ///< the linear solver that factorized K (empty: no solve)
+  std::string solver;             ///< the linear solver that factorized K (empty: no solve); "+shift": K was
+                                  ///< singular and its diagonal was perturbed by 1e-6 |K_ii| (newton.cpp)
   double assembly_seconds = 0;
   double factor_seconds = 0;      ///< numeric factorization (+ symbolic analysis on the first of a step)
   double solve_seconds = 0;       ///< forward/back substitution
@@ -29,6 +30,7 @@ struct NewtonResult {
   int iterations = 0;
   std::string failure;  ///< why it did not converge
   double last_relative_residual = 0;
+  int perturbed = 0;  ///< iterations whose singular tangent was solved with a perturbed diagonal (newton.cpp)
 };
 
 /// An enclosed-volume constraint V(u) = target whose pressure (of `load`) is an unknown.
