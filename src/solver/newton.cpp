@@ -48,44 +48,6 @@ void fill_bordered(const SparseMatrix& K, const Eigen::VectorXd& g, const Eigen:
   for (int i = 0; i < nf; ++i) a[k++] = -g(i);
   a[k++] = 0.0;
 }
-/// Factorizes M and solves M x = b. If M is singular — the factorization fails, x is not
-/// finite, or x moves a DOF farther than `max_step` (ten times the model's size: a
-/// near-null mode amplified by a tiny pivot) — retries with the diagonal perturbed,
-/// M + δ diag(|M_ii|), δ = 1e-6, 1e-4, 1e-2 in turn (a zero diagonal entry: δ times the largest):
-/// a pivot perturbation as in PARDISO or MUMPS. The residual is untouched, so a converged
-/// state is exact; only the Newton direction changes, in the near-null modes: those of a
-/// membrane without stress (the inextensional modes of a cylinder, an unstressed flat
-/// region), which the stress of the next iterates stiffens. `note` gets "+shift" when the
-/// perturbation was used. False if every attempt fails.
-bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
-                     double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
-                     double& solve_seconds) {
-  note.clear();
-  factor_seconds = solve_seconds = 0;
-  const auto attempt = [&](const SparseMatrix& A) {
-    auto t = std::chrono::steady_clock::now();
-    const bool regular = solver.factorize(A);
-    factor_seconds += seconds_since(t);
-    if (!regular) return false;
-    t = std::chrono::steady_clock::now();
-    x = solver.solve(b);
-    solve_seconds += seconds_since(t);
-    return x.allFinite() && x.cwiseAbs().maxCoeff() <= max_step;
-  };
-  if (attempt(M)) return true;
-  if (!allow_shift) return x.allFinite() && x.size() > 0;  // volume control: keep the plain behaviour
-  note = "+shift";
-  const double largest = M.diagonal().cwiseAbs().maxCoeff();
-  for (double delta : {1e-6, 1e-4, 1e-2}) {
-    SparseMatrix S = M;
-    for (int j = 0; j < S.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(S, j); it; ++it)
-        if (it.row() == j) it.valueRef() += delta * (it.value() != 0 ? std::abs(it.value()) : largest);
-    if (attempt(S)) return true;
-  }
-  return false;
-}
-
 /// Ten times the diagonal of the model's bounding box (current positions do not matter for a
 /// bound this loose): no Newton correction of a sound tangent moves a node that far.
 double step_bound(const System& system) {
@@ -141,6 +103,38 @@ bool predict(const System& system, LinearSolver& solver, const LoadState& loads,
 }
 
 }  // namespace
+
+bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
+                     double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
+                     double& solve_seconds) {
+  note.clear();
+  factor_seconds = solve_seconds = 0;
+  // 0: singular (failed factorization or a non-finite x); 1: x beyond max_step; 2: fine.
+  const auto attempt = [&](const SparseMatrix& A) {
+    auto t = std::chrono::steady_clock::now();
+    const bool regular = solver.factorize(A);
+    factor_seconds += seconds_since(t);
+    if (!regular) return 0;
+    t = std::chrono::steady_clock::now();
+    x = solver.solve(b);
+    solve_seconds += seconds_since(t);
+    if (!x.allFinite()) return 0;
+    return x.cwiseAbs().maxCoeff() <= max_step ? 2 : 1;
+  };
+  const int plain = attempt(M);
+  if (plain == 2) return true;
+  if (!allow_shift) return plain == 1;  // volume control: a large but finite correction is kept
+  note = "+shift";
+  const double largest = M.diagonal().cwiseAbs().maxCoeff();
+  for (double delta : {1e-6, 1e-4, 1e-2}) {
+    SparseMatrix S = M;
+    for (int j = 0; j < S.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(S, j); it; ++it)
+        if (it.row() == j) it.valueRef() += delta * (it.value() != 0 ? std::abs(it.value()) : largest);
+    if (attempt(S) == 2) return true;
+  }
+  return false;
+}
 
 NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,

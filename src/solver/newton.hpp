@@ -59,6 +59,19 @@ struct VolumeConstraint {
 /// solution). Its norm is R₀ (what the plain start's residual is for a linear model), and
 /// the predictor counts as the first iteration. If K(u_n) cannot be factorized or u_n is not
 /// admissible under the new loads, Newton starts plainly from u.
+/// Factorizes M and solves M x = b. If M is singular — the factorization fails, x is not
+/// finite, or x moves a DOF farther than `max_step` (Newton passes ten times the model's size:
+/// a near-null mode amplified by a tiny pivot) — and `allow_shift`, retries with the diagonal
+/// perturbed, M + δ diag(|M_ii|), δ = 1e-6, 1e-4, 1e-2 in turn (a zero diagonal entry: δ times
+/// the largest): a pivot perturbation as in PARDISO or MUMPS. The residual is untouched, so a
+/// converged state is exact; only the Newton direction changes, in the near-null modes: those
+/// of a membrane without stress (the inextensional modes of a cylinder, an unstressed flat
+/// region), which the stress of the next iterates stiffens. `note` is "+shift" when the
+/// perturbation was used; the seconds of all attempts are added up. False if every attempt fails.
+bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
+                     double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
+                     double& solve_seconds);
+
 NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
                     const VolumeConstraint* constraint = nullptr, const Eigen::VectorXd* converged = nullptr);
