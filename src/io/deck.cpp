@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "io/deck_limits.hpp"
+#include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "contact/axisym_contact.hpp"
 #include "mesh/meridian.hpp"
@@ -36,12 +37,16 @@ const ComponentSpec& part_spec() {
       "`axisymmetric_membrane` parts (2-node elements on a meridian in the (r, z) plane) get the node sets "
       "`<part>.start`, `<part>.end` and `<part>.all`; `membrane` parts (3-node triangles and 4-node "
       "quadrilaterals in 3-D) get `<part>.all` and their generator's sets as `<part>.<set>`, or the "
-      "physical curves and points of their Gmsh file. A deck's parts are all axisymmetric or all 3-D.",
-      {required(one_of(text("element", "element type"), {"axisymmetric_membrane", "membrane"})),
+      "physical curves and points of their Gmsh file; `axisymmetric_solid` parts have their own keys "
+      "(see `parts` (type `axisymmetric_solid`)). A deck's parts are all axisymmetric (membranes and "
+      "solids) or all 3-D. A part with `enter_step` takes part from that step on (see the user guide).",
+      {required(one_of(text("element", "element type"), {"axisymmetric_membrane", "membrane", "axisymmetric_solid"})),
        required(text("material", "name of a material in `materials`")),
        required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
        required(structured("mesh", "map", "`type:` a generator (see Meshes) or `gmsh`, and its keys")),
-       structured("frame", "map", "3-D parts: the material frame rule (see `parts.frame`)")}};
+       structured("frame", "map", "3-D parts: the material frame rule (see `parts.frame`)"),
+       text("enter_step", "name of the step from which the part is assembled, stress free in its deck geometry "
+                          "(default: from the start)")}};
   return s;
 }
 
@@ -272,29 +277,67 @@ void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
   m.node_sets.push_back({part.name + ".all", part.nodes});
 }
 
+/// The name of step k (0-based) of the deck's `steps` list, "step" if it has none.
+std::string step_name(const DeckNode& steps, std::size_t k) {
+  const std::vector<DeckNode> items = steps.is_sequence() ? steps.items() : std::vector<DeckNode>{};
+  if (k < items.size() && items[k].is_map() && items[k].has("name") && items[k]["name"].is_scalar())
+    return items[k]["name"].as_string();
+  return "step";
+}
+
+/// The 0-based index of the step named by `key` (enter_step), from the deck's `steps` list
+/// (read before the steps themselves: parts come first). Unknown or ambiguous names are errors.
+int step_index(const DeckNode& deck, const Params& p, const std::string& key) {
+  const std::string& wanted = p.text(key);
+  std::vector<int> found;
+  std::string known;
+  const DeckNode steps = deck["steps"];
+  const std::size_t count = steps.is_sequence() ? steps.items().size() : 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::string n = step_name(steps, k);
+    known += (known.empty() ? "" : ", ") + n;
+    if (n == wanted) found.push_back(static_cast<int>(k));
+  }
+  if (found.empty()) p.fail(key, "unknown step '" + wanted + "' (the steps are: " + known + ")");
+  if (found.size() > 1) p.fail(key, fmt::format("{} steps are named '{}': give them distinct names", found.size(), wanted));
+  return found.front();
+}
+
 void read_parts(const DeckNode& deck, Model& m) {
   const DeckNode parts = deck.required("parts");
   if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
   SurfaceMeshCache cache;
   bool first = true;
   for (const auto& [name, node] : parts.entries()) {
-    const Params p = read_params(node, part_spec(), m.units);
+    const bool solid = node.is_map() && node.has("element") && node["element"].is_scalar() &&
+                       node["element"].as_string() == "axisymmetric_solid";
+    const Params p = read_params(node, solid ? solid_part_spec() : part_spec(), m.units);
     Part part;
     part.name = name;
     part.element = p.text("element");
-    part.thickness = p.number("thickness");
+    if (!solid) part.thickness = p.number("thickness");
     part.material_name = p.text("material");
     auto mat = m.materials.find(part.material_name);
-    if (mat == m.materials.end())
+    auto smat = m.solid_materials.find(part.material_name);
+    if (mat == m.materials.end() && smat == m.solid_materials.end())
       p.fail("material", "undefined material '" + part.material_name + "' (not in `materials`)");
-    part.material = mat->second.get();
+    if (solid && smat == m.solid_materials.end())
+      p.fail("material", "material '" + part.material_name + "' is a membrane material (type " + mat->second->type() +
+                             "); an axisymmetric_solid part needs a solid material (e.g. type neo_hookean_solid)");
+    if (!solid && mat == m.materials.end())
+      p.fail("material", "material '" + part.material_name + "' is a solid material (type " + smat->second->type() +
+                             "); a " + part.element + " part needs a membrane material");
+    if (solid) part.solid_material = smat->second.get();
+    else part.material = mat->second.get();
+    if (p.has("enter_step")) part.enter_step = step_index(deck, p, "enter_step");
     const Geometry g = part.element == "membrane" ? Geometry::three_d : Geometry::axisymmetric;
     if (first) m.geometry = g;
     else if (g != m.geometry)
       p.fail("element", "axisymmetric and 3-D parts cannot be mixed in one deck (the first part is " +
                             m.parts.front().element + ")");
     first = false;
-    if (g == Geometry::axisymmetric) read_meridian_part(node, part, m);
+    if (solid) read_solid_part(node, p, part, m);
+    else if (g == Geometry::axisymmetric) read_meridian_part(node, part, m);
     else read_surface_part(node, part, m, cache);
     m.parts.push_back(std::move(part));
   }
@@ -311,7 +354,9 @@ void read_node_sets(const DeckNode& deck, Model& m) {
     const auto& pn = m.parts[part].nodes;
     NodeSet set{name, {}};
     const DeckNode nodes = node.required("nodes");
-    const bool axisym = m.geometry == Geometry::axisymmetric;
+    const bool axisym = m.geometry == Geometry::axisymmetric && !m.parts[part].is_solid();
+    if (m.parts[part].is_solid() && nodes.is_scalar() && (nodes.as_string() == "start" || nodes.as_string() == "end"))
+      nodes.fail("a solid part has no start or end: use its sets `" + p.text("part") + ".inner`, `.outer`, `.bottom`, `.top`");
     if (nodes.is_scalar()) {
       const std::string w = nodes.as_string();
       if (w == "start" && axisym) set.nodes = {pn.front()};
@@ -374,6 +419,8 @@ void read_loads(const DeckNode& deck, Model& m) {
     const Params p = read_params(node, load_spec(), m.units);
     const int part = m.find_part(p.text("part"));
     if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
+    if (m.parts[part].is_solid())
+      p.fail("part", "part '" + p.text("part") + "' is a solid: pressure loads act on membrane parts");
     PressureLoad load{name, part, p.boolean("flip") ? -1.0 : 1.0, {}, node.where()};
     const auto& vp = p.numbers("volume_point");
     load.volume.point = Eigen::Vector3d(vp[0], vp[1], vp[2]);
@@ -460,6 +507,9 @@ void read_contacts(const DeckNode& deck, Model& m) {
         if (std::find(m.parts[k].nodes.begin(), m.parts[k].nodes.end(), wanted.front()) != m.parts[k].nodes.end())
           c.part = static_cast<int>(k);
     }
+    if (c.part >= 0 && m.parts[c.part].is_solid())
+      p.fail("slave", "the slave of a rigid contact pair must be (on) an axisymmetric membrane part; '" + slave +
+                          "' is (on) a solid part");
     const Part& part = m.parts[c.part];
     if (wanted.empty()) wanted = part.nodes;
     Eigen::Matrix2Xd chain(2, static_cast<Eigen::Index>(part.nodes.size()));
@@ -475,6 +525,26 @@ void read_contacts(const DeckNode& deck, Model& m) {
       }
     m.contacts.push_back(std::move(c));
   }
+}
+
+/// The part entering latest (highest enter_step) among those a boundary or load named `target`
+/// acts on (a boundary: the parts holding a node of its set), or −1 if all of them are there from the start.
+int entering_part(const Model& m, const std::string& target) {
+  int late = -1;
+  const auto consider = [&](int p) {
+    if (m.parts[p].enter_step > 0 && (late < 0 || m.parts[p].enter_step > m.parts[late].enter_step)) late = p;
+  };
+  for (const auto& l : m.loads)
+    if (l.name == target) consider(l.part);
+  for (const auto& b : m.boundaries)
+    if (b.name == target)
+      for (std::size_t p = 0; p < m.parts.size(); ++p)
+        for (int n : m.node_sets[b.node_set].nodes)
+          if (std::find(m.parts[p].nodes.begin(), m.parts[p].nodes.end(), n) != m.parts[p].nodes.end()) {
+            consider(static_cast<int>(p));
+            break;
+          }
+  return late;
 }
 
 void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
@@ -493,6 +563,10 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
         const bool is_boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == target; });
         const bool is_load = std::any_of(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == target; });
         if (!is_boundary && !is_load) value.fail("'" + target + "' is neither a boundary nor a load");
+        if (const int late = entering_part(m, target); late >= 0 && static_cast<int>(m.steps.size()) < m.parts[late].enter_step)
+          value.fail(fmt::format("'{}' acts on part '{}', which enters in step {} '{}': set it in that step or later",
+                                 target, m.parts[late].name, m.parts[late].enter_step + 1,
+                                 step_name(steps, m.parts[late].enter_step)));
         s.targets[target] = read_quantity(value, is_boundary ? Dimension::length : Dimension::pressure, m.units);
       }
     }
@@ -504,6 +578,8 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       if (it == m.loads.end()) vc["load"].fail("undefined pressure load '" + load + "'");
       if (s.targets.count(load)) vc["load"].fail("load '" + load + "' is also set in `set`: a volume-controlled pressure is an unknown");
       s.volume_control.load = static_cast<int>(it - m.loads.begin());
+      if (const int late = m.loads[s.volume_control.load].part; static_cast<int>(m.steps.size()) < m.parts[late].enter_step)
+        vc["load"].fail("load '" + load + "' acts on part '" + m.parts[late].name + "', which has not entered yet");
       s.volume_control.target = read_quantity(vc.required("volume"), Dimension::volume, m.units);
       if (!(s.volume_control.target > 0)) vc["volume"].fail("the target volume must be positive");
     }
@@ -548,6 +624,15 @@ void read_output(const DeckNode& deck, Model& m) {
     if (q->target == "part") {
       r.part = m.find_part(h.text("part"));
       if (r.part < 0) h.fail("part", "undefined part '" + h.text("part") + "'");
+      const bool cylindrical = r.quantity.rfind("sigma_", 0) == 0 && r.quantity.size() > 7 &&
+                               (r.quantity[6] == 'r' || r.quantity[6] == 't' || r.quantity[6] == 'z');
+      const bool axisym_only = cylindrical || r.quantity == "hydrostatic_pressure" || r.quantity == "volume_ratio";
+      if (axisym_only && m.geometry != Geometry::axisymmetric)
+        h.fail("quantity", "'" + r.quantity + "' is a quantity of axisymmetric parts");
+      if (!axisym_only && r.quantity != "radius" && m.parts[r.part].is_solid())
+        h.fail("quantity", "'" + r.quantity + "' is a membrane quantity; part '" + h.text("part") +
+                               "' is a solid (its quantities: sigma_rr, sigma_thetatheta, sigma_zz, sigma_rz, "
+                               "hydrostatic_pressure, volume_ratio, radius)");
     } else if (q->target == "node_set") {
       r.node_set = node_set_ref(h, "node_set", m);
     } else if (q->target == "load") {
@@ -620,6 +705,15 @@ const std::vector<HistoryQuantity>& history_quantities() {
       {"sigma_min", "part", Dimension::pressure, "minimum in-plane principal Cauchy stress"},
       {"thickness", "part", Dimension::length, "current thickness h = λ3 H"},
       {"radius", "part", Dimension::length, "current distance of the Gauss points from the z axis"},
+      {"sigma_rr", "part", Dimension::pressure,
+       "axisymmetric parts: Cauchy stress σ_rr in cylindrical axes (membranes: of σ = σ_ss t⊗t + σ_θθ e_θ⊗e_θ, t the "
+       "meridian tangent)"},
+      {"sigma_thetatheta", "part", Dimension::pressure, "axisymmetric parts: hoop Cauchy stress σ_θθ"},
+      {"sigma_zz", "part", Dimension::pressure, "axisymmetric parts: axial Cauchy stress σ_zz (a tube's meridional stress)"},
+      {"sigma_rz", "part", Dimension::pressure, "axisymmetric parts: Cauchy shear stress σ_rz"},
+      {"hydrostatic_pressure", "part", Dimension::pressure,
+       "axisymmetric parts: hydrostatic pressure −tr σ/3 (positive in compression; mean-dilatation solids: −U'(θ), constant per element)"},
+      {"volume_ratio", "part", Dimension::dimensionless, "axisymmetric parts: J = det F (1 for the incompressible membranes)"},
       {"position_r", "node_set", Dimension::length, "axisymmetric: current r of the nodes"},
       {"position_x", "node_set", Dimension::length, "3-D: current x of the nodes"},
       {"position_y", "node_set", Dimension::length, "3-D: current y of the nodes"},
@@ -642,7 +736,7 @@ const std::vector<HistoryQuantity>& history_quantities() {
 }
 
 std::vector<ComponentSpec> deck_sections() {
-  return {units_spec(),     part_spec(),   frame_spec(),   node_set_spec(), boundary_spec(),
+  return {units_spec(),     part_spec(),   solid_part_spec(), frame_spec(),   node_set_spec(), boundary_spec(),
           load_spec(),      cylinder_spec(), polyline_spec(), contact_spec(), solver_spec(),
           step_spec(),      output_spec(), history_spec()};
 }
@@ -682,13 +776,20 @@ Model read_deck_text(const std::string& text, const std::string& file) {
     if (!node.is_map()) node.fail("expected a map with `type` and the model's constants");
     const std::string type = node.required("type").as_string();
     auto t = material_types().find(type);
-    if (t == material_types().end()) {
+    auto st = solid_material_types().find(type);
+    if (t == material_types().end() && st == solid_material_types().end()) {
       std::string list;
       for (const auto& [k, v] : material_types()) list += (list.empty() ? "" : ", ") + k;
+      for (const auto& [k, v] : solid_material_types()) list += ", " + k;
       node["type"].fail("unknown material type '" + type + "' (known: " + list + ")");
     }
-    const Params p = read_params(node, t->second.spec, m.units, names({"type"}));
-    m.materials[name] = t->second.make(p);
+    if (t != material_types().end()) {
+      const Params p = read_params(node, t->second.spec, m.units, names({"type"}));
+      m.materials[name] = t->second.make(p);
+    } else {
+      const Params p = read_params(node, st->second.spec, m.units, names({"type"}));
+      m.solid_materials[name] = st->second.make(p);
+    }
   }
   read_parts(deck, m);
   read_node_sets(deck, m);

@@ -4,7 +4,9 @@
 
 #include "io/deck.hpp"
 #include "materials/membrane_material.hpp"
+#include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
+#include "materials/solid_material.hpp"
 #include "mesh/meridian.hpp"
 #include "mesh/surface_generators.hpp"
 
@@ -35,6 +37,10 @@ std::string deck_reference_markdown() {
       for (const auto& [name, t] : surface_generator_types())
         s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
       s += fmt::format("#### `type: gmsh`\n\n{}\n\n{}\n", gmsh_mesh_spec().doc, params_markdown(gmsh_mesh_spec()));
+      s += "Axisymmetric solid parts (`element: axisymmetric_solid`):\n\n";
+      s += fmt::format("#### `type: grid`\n\n{}\n\n{}\n", solid_grid_spec().doc, params_markdown(solid_grid_spec()));
+      s += fmt::format("##### Bump profiles (`inner` or `outer` as a map)\n\n{}\n\n{}\n", profile_bump_spec().doc,
+                       params_markdown(profile_bump_spec()));
     }
     if (sec.section == "output.history") {
       s += "### History quantities\n\n| quantity | needs | dimension | meaning |\n|---|---|---|---|\n";
@@ -45,10 +51,15 @@ std::string deck_reference_markdown() {
     }
   }
   s += "## `materials`\n\nA map from names to entries with `type` and the model's constants. Direction 1 is "
-       "circumferential (hoop), 2 axial/meridional, 3 through the thickness. Every model is incompressible; "
-       "plane stress is enforced exactly (THEORY §2).\n\n";
+       "circumferential (hoop), 2 axial/meridional, 3 through the thickness. Every membrane model is incompressible; "
+       "plane stress is enforced exactly (THEORY §2). Solid materials (the `_solid` types) follow.\n\n";
   for (const auto& [name, t] : material_types())
     s += fmt::format("### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
+  s += "### Solid materials\n\nFor `axisymmetric_solid` parts only (a membrane part cannot use them, nor a solid "
+       "part a membrane material): decoupled strain energies W = W_iso(C̄) + U(J), nearly incompressible "
+       "when κ ≫ μ.\n\n";
+  for (const auto& [name, t] : solid_material_types())
+    s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
   return s;
 }
 

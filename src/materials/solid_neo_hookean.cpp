@@ -28,7 +28,7 @@ namespace {
 class SolidNeoHookean final : public SolidMaterial {
 public:
   SolidNeoHookean(double mu, double kappa) : mu_(mu), kappa_(kappa) {}
-  std::string type() const override { return "neo_hookean"; }
+  std::string type() const override { return "neo_hookean_solid"; }
 
   IsochoricResponse isochoric(const Eigen::Matrix3d& C) const override {
     const double det = C.determinant();
@@ -57,8 +57,8 @@ private:
 };
 
 const RegisterSolidMaterial reg(SolidMaterialType{
-    ComponentSpec{"solid_materials", "neo_hookean",
-                  "Compressible neo-Hookean solid W = (μ/2)(Ī1 − 3) + (κ/4)(J² − 1 − 2 ln J), Ī1 = J^(−2/3) I1.",
+    ComponentSpec{"materials", "neo_hookean_solid",
+                  "Solid parts: compressible neo-Hookean solid W = (μ/2)(Ī1 − 3) + (κ/4)(J² − 1 − 2 ln J), Ī1 = J^(−2/3) I1.",
                   {required(positive(number("mu", Dimension::pressure, "shear modulus μ"))),
                    required(positive(number("kappa", Dimension::pressure, "bulk modulus κ")))}},
     [](const Params& p) -> std::unique_ptr<SolidMaterial> {

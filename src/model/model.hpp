@@ -15,14 +15,17 @@
 #include "core/errors.hpp"
 #include "io/units.hpp"
 #include "loads/surface_pressure.hpp"
+#include "elements/axisym_solid.hpp"
 #include "materials/membrane_material.hpp"
+#include "materials/solid_material.hpp"
 
 namespace tunica {
 
 enum class Geometry { axisymmetric, three_d };
 
-/// Element kinds: the 2-node axisymmetric membrane, the 3-node triangle and the 4-node quadrilateral membrane.
-enum class ElementKind { axisym2, tri3, quad4 };
+/// Element kinds: the 2-node axisymmetric membrane, the 3-node triangle and the 4-node quadrilateral
+/// membrane, and the 4-node axisymmetric solid (a quadrilateral in the (r, z) plane, elements/axisym_solid.hpp).
+enum class ElementKind { axisym2, tri3, quad4, solid4 };
 constexpr int nodes_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 3 : 4; }
 
 /// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
@@ -46,12 +49,21 @@ struct FrameRule {
 struct Part {
   std::string name;
   std::string element;                     ///< element type name
-  const MembraneMaterial* material = nullptr;
+  const MembraneMaterial* material = nullptr;  ///< membrane parts (null for solid parts)
+  const SolidMaterial* solid_material = nullptr;  ///< solid parts (element `axisymmetric_solid`)
+  SolidFormulation formulation = SolidFormulation::mean_dilatation;  ///< solid parts
   std::string material_name;
-  double thickness = 0;                    ///< reference thickness H
-  std::vector<ElementBlock> blocks;        ///< axisymmetric: one axisym2 block; 3-D: triangles and/or quads
-  std::vector<int> nodes;                  ///< global node numbers (axisymmetric: in meridian order)
+  double thickness = 0;                    ///< reference thickness H (membranes)
+  std::vector<ElementBlock> blocks;        ///< axisymmetric membrane: one axisym2 block; solid: one solid4
+                                           ///< block; 3-D: triangles and/or quads
+  std::vector<int> nodes;                  ///< global node numbers (axisymmetric membrane: in meridian order;
+                                           ///< solid: the grid's nodes, row by row from the bottom)
   FrameRule frame;                         ///< 3-D parts
+  /// 0-based index of the step from which the part is assembled (`enter_step`; 0: from the start).
+  /// Before it the part takes no part: its elements, the loads on it and its contact pairs are
+  /// skipped and the nodes only it uses are held at their reference positions (see Model::part_active).
+  int enter_step = 0;
+  bool is_solid() const { return solid_material != nullptr; }
   int num_elements() const {
     int n = 0;
     for (const auto& b : blocks) n += b.size();
@@ -162,6 +174,7 @@ struct Model {
   Geometry geometry = Geometry::axisymmetric;
   std::vector<Eigen::Vector3d> X;  ///< reference node positions (axisymmetric: (r, z, 0))
   std::map<std::string, std::unique_ptr<MembraneMaterial>> materials;
+  std::map<std::string, std::unique_ptr<SolidMaterial>> solid_materials;  ///< same `materials` section, solid types
   std::vector<Part> parts;
   std::vector<NodeSet> node_sets;
   std::vector<Boundary> boundaries;
@@ -180,6 +193,10 @@ struct Model {
   }
   int find_node_set(const std::string& name) const;
   int find_part(const std::string& name) const;
+  /// True if part `part` takes part in step `step` (0-based; the reference state counts as step 0):
+  /// step ≥ its enter_step. Elements, pressure loads and contact pairs of an inactive part are not
+  /// assembled; contact code should skip a pair whose slave or master part is inactive.
+  bool part_active(int part, int step) const { return step >= parts[part].enter_step; }
 };
 
 }  // namespace tunica

@@ -157,7 +157,7 @@ TEST(BadInput, UnknownUnitSystem) {
 
 TEST(BadInput, UnknownMaterialType) {
   expect_error("unknown-material-type", "type: fung ", "type: fungus ", "materials.aorta.type",
-               "unknown material type 'fungus' (known: fung, hgo, mooney_rivlin, neo_hookean, ogden)");
+               "unknown material type 'fungus' (known: fung, hgo, mooney_rivlin, neo_hookean, ogden, neo_hookean_solid)");
 }
 
 TEST(BadInput, UnreadableFile) {

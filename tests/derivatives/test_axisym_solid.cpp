@@ -33,9 +33,9 @@ std::unique_ptr<SolidMaterial> solid_from_yaml(const std::string& yaml) {
 }
 
 const char* kMaterials[] = {
-    "{type: neo_hookean, mu: 0.5, kappa: 0.7246}",  // the paper's plaque ratio κ/μ ≈ 1.45
-    "{type: neo_hookean, mu: 0.3, kappa: 30}",
-    "{type: neo_hookean, mu: 1.0, kappa: 10000}",
+    "{type: neo_hookean_solid, mu: 0.5, kappa: 0.7246}",  // the paper's plaque ratio κ/μ ≈ 1.45
+    "{type: neo_hookean_solid, mu: 0.3, kappa: 30}",
+    "{type: neo_hookean_solid, mu: 1.0, kappa: 10000}",
 };
 
 const SolidFormulation kForms[] = {SolidFormulation::displacement, SolidFormulation::mean_dilatation};
@@ -123,7 +123,7 @@ TEST(SolidMaterial, StressAndTangentMatchFiniteDifferencesOfTheEnergy) {
 }
 
 TEST(SolidMaterial, VolumetricDerivativesAndSmallStrainModuli) {
-  const auto m = solid_from_yaml("{type: neo_hookean, mu: 0.5, kappa: 0.7246}");
+  const auto m = solid_from_yaml("{type: neo_hookean_solid, mu: 0.5, kappa: 0.7246}");
   for (double J : {0.3, 0.9, 1.0, 1.4}) {
     const double h = 1e-6;
     const VolumetricResponse v = m->volumetric(J);
@@ -143,14 +143,14 @@ TEST(SolidMaterial, VolumetricDerivativesAndSmallStrainModuli) {
 }
 
 TEST(SolidMaterial, RegistryDeclaresParameters) {
-  ASSERT_EQ(solid_material_types().count("neo_hookean"), 1u);
-  const auto& spec = solid_material_types().at("neo_hookean").spec;
-  EXPECT_EQ(spec.section, "solid_materials");
+  ASSERT_EQ(solid_material_types().count("neo_hookean_solid"), 1u);
+  const auto& spec = solid_material_types().at("neo_hookean_solid").spec;
+  EXPECT_EQ(spec.section, "materials");
   ASSERT_EQ(spec.params.size(), 2u);
   EXPECT_EQ(spec.params[0].name, "mu");
   EXPECT_EQ(spec.params[1].name, "kappa");
-  EXPECT_THROW(solid_from_yaml("{type: neo_hookean, mu: 0.5, kappa: 0}"), std::exception);
-  EXPECT_THROW(solid_from_yaml("{type: neo_hookean, mu: 0.5}"), std::exception);
+  EXPECT_THROW(solid_from_yaml("{type: neo_hookean_solid, mu: 0.5, kappa: 0}"), std::exception);
+  EXPECT_THROW(solid_from_yaml("{type: neo_hookean_solid, mu: 0.5}"), std::exception);
 }
 
 TEST(AxisymSolid, InternalForceIsTheGradientOfTheElementEnergy) {
@@ -280,7 +280,7 @@ Eigen::Vector4d homogeneous_sigma(double mu, double kappa, double lr, double lz)
 
 TEST(AxisymSolid, PatchTestAndHomogeneousStressAgainstTheClosedForm) {
   const double mu = 0.3, kappa = 30;
-  const auto m = solid_from_yaml("{type: neo_hookean, mu: 0.3, kappa: 30}");
+  const auto m = solid_from_yaml("{type: neo_hookean_solid, mu: 0.3, kappa: 30}");
   const Patch patch = distorted_patch(4, 3);
   for (SolidFormulation form : kForms) {
     for (const auto& [lr, lz] : {std::pair{1.2, 0.9}, std::pair{0.85, 1.3}, std::pair{1.05, 1.05}}) {

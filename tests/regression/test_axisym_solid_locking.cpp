@@ -184,8 +184,8 @@ Result solve_cylinder(const SolidMaterial& m, SolidFormulation form, int nr, dou
 }
 
 std::unique_ptr<SolidMaterial> nearly_incompressible() {
-  const YAML::Node node = YAML::Load("{type: neo_hookean, mu: 1.0, kappa: 1.0e4}");
-  const auto& type = solid_material_types().at("neo_hookean");
+  const YAML::Node node = YAML::Load("{type: neo_hookean_solid, mu: 1.0, kappa: 1.0e4}");
+  const auto& type = solid_material_types().at("neo_hookean_solid");
   return type.make(read_params(DeckNode(node, "test", "solid_materials.m"), type.spec, UnitSystem("mm", "N"), {"type"}));
 }
 
