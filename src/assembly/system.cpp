@@ -114,6 +114,94 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     }
     contact_pos_.push_back(std::move(pos));
   }
+
+  // Parts that enter later: the step from which each DOF may move, and the held free DOFs.
+  dof_enter_.assign(n, 0);
+  {
+    std::vector<int> node_enter(model.num_nodes(), -1);
+    for (const auto& part : model.parts)
+      for (const auto& block : part.blocks)
+        for (int node : block.nodes)
+          node_enter[node] = node_enter[node] < 0 ? part.enter_step : std::min(node_enter[node], part.enter_step);
+    for (int node = 0; node < model.num_nodes(); ++node)
+      for (int c = 0; c < dpn_; ++c) {
+        const int d = dpn_ * node + c;
+        dof_enter_[d] = std::max(0, node_enter[node]);
+        if (dof_enter_[d] > 0 && eq_[d] >= 0) held_.push_back({d, position(eq_[d], eq_[d]), 1.0});
+      }
+  }
+  if (!held_.empty()) compute_hold_stiffness();
+}
+
+namespace {
+
+/// Reference and current nodes of a 4-node axisymmetric solid element: column a = (r_a, z_a).
+void solid_nodes(const Model& m, const int* en, const Eigen::VectorXd& u, SolidNodes& X, SolidNodes& x) {
+  for (int a = 0; a < 4; ++a) {
+    X.col(a) = m.X[en[a]].head<2>();
+    x.col(a) = X.col(a) + u.segment<2>(2 * en[a]);
+  }
+}
+
+}  // namespace
+
+void System::compute_hold_stiffness() {
+  // k_i = Σ_e (K_e)_ii at u = 0 over the elements of the parts that enter later.
+  const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(num_dofs());
+  Eigen::VectorXd diag = Eigen::VectorXd::Zero(num_dofs());
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    const Part& part = model_.parts[p];
+    if (part.enter_step == 0) continue;
+    for (std::size_t b = 0; b < part.blocks.size(); ++b) {
+      const ElementBlock& block = part.blocks[b];
+      for (int e = 0; e < block.size(); ++e) {
+        const int* en = block.element(e);
+        Eigen::VectorXd d;
+        if (block.kind == ElementKind::solid4) {
+          SolidNodes X, x;
+          SolidVector f;
+          SolidMatrix Ke;
+          solid_nodes(model_, en, u0, X, x);
+          axisym_solid(X, x, *part.solid_material, part.formulation, f, &Ke);
+          d = Ke.diagonal();
+        } else if (block.kind == ElementKind::axisym2) {
+          AxisymNodes X, x;
+          Eigen::Vector4d f;
+          Eigen::Matrix4d Ke;
+          for (int a = 0; a < 2; ++a) X.col(a) = x.col(a) = model_.X[en[a]].head<2>();
+          axisym_membrane(X, x, part.thickness, *part.material, f, &Ke);
+          d = Ke.diagonal();
+        } else if (block.kind == ElementKind::tri3) {
+          SurfaceNodes<3> x;
+          ElementVector<3> f;
+          ElementMatrix<3> Ke;
+          for (int a = 0; a < 3; ++a) x.col(a) = model_.X[en[a]];
+          membrane3d<3>(blocks_[p][b].tri[e], x, *part.material, f, &Ke);
+          d = Ke.diagonal();
+        } else {
+          SurfaceNodes<4> x;
+          ElementVector<4> f;
+          ElementMatrix<4> Ke;
+          for (int a = 0; a < 4; ++a) x.col(a) = model_.X[en[a]];
+          membrane3d<4>(blocks_[p][b].quad[e], x, *part.material, f, &Ke);
+          d = Ke.diagonal();
+        }
+        for (int a = 0; a < d.size(); ++a) diag(dpn_ * en[a / dpn_] + a % dpn_) += d(a);
+      }
+    }
+  }
+  double largest = 0;
+  for (const auto& h : held_) largest = std::max(largest, diag(h.dof));
+  // A DOF without reference stiffness (a membrane's out-of-plane direction) gets the largest one.
+  for (auto& h : held_) h.k = diag(h.dof) > 0 ? diag(h.dof) : (largest > 0 ? largest : 1.0);
+}
+
+void System::assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K) const {
+  for (const auto& h : held_) {
+    if (!held(h.dof, step)) continue;
+    R(h.dof) += h.k * u(h.dof);
+    if (K) K->valuePtr()[h.pos] += h.k;
+  }
 }
 
 void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start) {
@@ -240,6 +328,28 @@ void System::assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pres
   for (double s2 : scale_e) scale2 += s2;
 }
 
+void System::assemble_solid(int p, int b, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
+                            double& scale2) const {
+  const Part& part = model_.parts[p];
+  const ElementBlock& block = part.blocks[b];
+  const int* scatter_pos = blocks_[p][b].scatter.data();
+  std::vector<double> scale_e(block.size());  // per element: summed in element order, whatever the threads
+  for_each_coloured(blocks_[p][b], [&](int e) {
+    SolidVector f;
+    SolidMatrix Ke;
+    SolidNodes X, x;
+    const int* en = block.element(e);
+    solid_nodes(model_, en, u, X, x);
+    axisym_solid(X, x, *part.solid_material, part.formulation, f, K ? &Ke : nullptr);
+    double s2 = f.squaredNorm();
+    // Stiffness × element size (its diagonal) bounds the round-off of stresses near zero strain.
+    if (K) s2 += Ke.squaredNorm() * (X.col(2) - X.col(0)).squaredNorm();
+    scale_e[e] = s2;
+    scatter(en, 2, f, K ? &Ke : nullptr, scatter_pos + 64 * e, R, K);
+  });
+  for (double s2 : scale_e) scale2 += s2;
+}
+
 template <int N>
 void System::assemble_surface(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R,
                               SparseMatrix* K, double& scale2) const {
@@ -297,19 +407,25 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   for (std::size_t l = 0; l < model_.loads.size(); ++l)
     pressure[model_.loads[l].part] += model_.loads[l].sign * loads.pressure[l];
 
-  for (std::size_t p = 0; p < model_.parts.size(); ++p)
+  // Inactive parts (not entered yet) are skipped with their loads; their nodes are held.
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    if (!model_.part_active(static_cast<int>(p), loads.step)) continue;
     for (std::size_t b = 0; b < model_.parts[p].blocks.size(); ++b) {
       const int pi = static_cast<int>(p), bi = static_cast<int>(b);
       switch (model_.parts[p].blocks[b].kind) {
         case ElementKind::axisym2: assemble_axisym(pi, bi, u, pressure[p], R, K, scale2); break;
         case ElementKind::tri3: assemble_surface<3>(pi, bi, u, pressure[p], R, K, scale2); break;
         case ElementKind::quad4: assemble_surface<4>(pi, bi, u, pressure[p], R, K, scale2); break;
+        case ElementKind::solid4: assemble_solid(pi, bi, u, R, K, scale2); break;
       }
     }
+  }
+  assemble_held(loads.step, u, R, K);
   // Contact, serially in pair and node order (deterministic): R += f, K += ∂f/∂x_s on the slave DOFs.
   int active = 0;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const ContactPair& pair = model_.contacts[c];
+    if (!model_.part_active(pair.part, loads.step)) continue;
     const RigidSurface& rigid = model_.rigid_surfaces[pair.rigid];
     for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
       const int n = pair.nodes[k];
@@ -433,9 +549,45 @@ double System::volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad) co
   return V;
 }
 
+std::vector<SolidPoint> System::solid_points(const Eigen::VectorXd& u, int p) const {
+  const Part& part = model_.parts[p];
+  std::vector<SolidPoint> out;
+  if (!part.is_solid()) return out;
+  for (const auto& block : part.blocks) {
+    out.reserve(out.size() + 4 * static_cast<std::size_t>(block.size()));
+    for (int e = 0; e < block.size(); ++e) {
+      SolidNodes X, x;
+      SolidVector f;
+      std::array<SolidPoint, 4> pts;
+      solid_nodes(model_, block.element(e), u, X, x);
+      axisym_solid(X, x, *part.solid_material, part.formulation, f, nullptr, &pts);
+      out.insert(out.end(), pts.begin(), pts.end());
+    }
+  }
+  return out;
+}
+
+double System::part_energy(const Eigen::VectorXd& u, int p) const {
+  const Part& part = model_.parts[p];
+  double energy = 0;
+  if (part.is_solid()) {
+    for (const auto& block : part.blocks)
+      for (int e = 0; e < block.size(); ++e) {
+        SolidNodes X, x;
+        SolidVector f;
+        solid_nodes(model_, block.element(e), u, X, x);
+        energy += axisym_solid(X, x, *part.solid_material, part.formulation, f, nullptr);
+      }
+    return energy;
+  }
+  for (const auto& pt : points(u, p)) energy += pt.W * pt.weight;
+  return energy;
+}
+
 std::vector<MembranePoint> System::points(const Eigen::VectorXd& u, int p) const {
   const Part& part = model_.parts[p];
   std::vector<MembranePoint> out;
+  if (part.is_solid()) return out;
   for (std::size_t b = 0; b < part.blocks.size(); ++b) {
     const ElementBlock& block = part.blocks[b];
     out.reserve(out.size() + static_cast<std::size_t>(block.size()) * points_per_element(block.kind));

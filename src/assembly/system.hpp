@@ -6,6 +6,13 @@
 // residual R = f_int − f_ext (all DOFs, so reactions can be read) and of
 // K = ∂R/∂u (free DOFs only) from the element and load kernels.
 //
+// Parts that enter in a later step (Part::enter_step, Model::part_active): while a
+// part is inactive its elements, the pressure loads on it and its contact pairs are
+// skipped, and each free DOF of a node that only inactive parts use is held at its
+// reference position by R_i = k_i u_i, K_ii = k_i, with k_i the diagonal of the part's
+// tangent at the reference state (a stiffness of the right size for the linear solver;
+// u_i stays exactly 0, so the part enters stress free in its deck geometry).
+//
 // Parallel assembly: the elements of each block are coloured once (greedy: no
 // two elements of one colour share a node) and each colour is one OpenMP loop.
 // Elements of a colour touch disjoint entries of R and K, so no locks are
@@ -16,6 +23,7 @@
 #include <vector>
 
 #include "assembly/references.hpp"
+#include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"
 #include "model/model.hpp"
 
@@ -36,6 +44,7 @@ struct LoadState {
   std::vector<double> boundary;  ///< per Model::boundaries
   std::vector<double> pressure;  ///< per Model::loads
   std::vector<double> volume;    ///< per Model::loads: enclosed volume at the last converged state
+  int step = 0;                  ///< 0-based step these amplitudes belong to: decides which parts are active
 };
 
 class System {
@@ -69,8 +78,17 @@ public:
   double volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad = nullptr) const;
   /// A zero matrix with the tangent's pattern.
   const SparseMatrix& pattern() const { return pattern_; }
-  /// Gauss-point states of every element of a part, block by block, element by element.
+  /// Gauss-point states of every element of a membrane part, block by block, element by element
+  /// (empty for a solid part).
   std::vector<MembranePoint> points(const Eigen::VectorXd& u, int part) const;
+  /// Gauss-point states of a solid part, 4 per element, element by element (empty for a membrane part).
+  std::vector<SolidPoint> solid_points(const Eigen::VectorXd& u, int part) const;
+  /// Stored strain energy of a part at u, Σ_e Π_e (membranes: Σ_g Ŵ w_g; solids: the element
+  /// energies of elements/axisym_solid.hpp, whatever the part's activity).
+  double part_energy(const Eigen::VectorXd& u, int part) const;
+  /// True if the free DOF `dof` is held at its reference position in step `step` (its node belongs
+  /// only to parts that have not entered yet).
+  bool held(int dof, int step) const { return step < dof_enter_[dof]; }
 
 private:
   struct Block {
@@ -90,6 +108,13 @@ private:
                         double& scale2) const;
   void assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
                        double& scale2) const;
+  /// Axisymmetric solid block: f and K of elements/axisym_solid.hpp, scattered like the membranes.
+  void assemble_solid(int p, int b, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
+                      double& scale2) const;
+  /// Holds the free DOFs of nodes of inactive parts: R_i += k_i u_i, K_ii += k_i.
+  void assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K) const;
+  /// k_i of the held DOFs: the diagonal of the tangent at u = 0 of the parts that enter later.
+  void compute_hold_stiffness();
 
   const Model& model_;
   int dpn_ = 2;
@@ -100,6 +125,14 @@ private:
   std::vector<std::vector<Block>> blocks_;  ///< per part, per block
   /// Per contact pair, per slave node: positions of its 2×2 block (rr, rz, zr, zz) in K's values (−1: not free-free).
   std::vector<std::vector<std::array<int, 4>>> contact_pos_;
+  /// Per DOF: the step from which it is free to move (the lowest enter_step of the parts using its node; 0 if none).
+  std::vector<int> dof_enter_;
+  /// Free DOFs that may be held: DOF, position of K_ii in K's values, k_i.
+  struct HeldDof {
+    int dof = -1, pos = -1;
+    double k = 1;
+  };
+  std::vector<HeldDof> held_;
 };
 
 /// Greedy colouring of elements so that no two of a colour share a node: `order` lists the
@@ -109,5 +142,7 @@ void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>&
 
 /// Gauss points per element of a kind.
 constexpr int points_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 1 : 4; }
+/// The material-dependent point states are MembranePoint for membranes and SolidPoint for solids.
+constexpr bool is_solid_kind(ElementKind k) { return k == ElementKind::solid4; }
 
 }  // namespace tunica

@@ -32,6 +32,8 @@ void Analysis::update_reactions() {
 void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
   if (resume) {
     state_ = *resume;
+    // Which parts are active follows from the step (restart files do not store it).
+    state_.loads.step = state_.step_start.step = state_.step;
     update_reactions();
   } else {
     update_reactions();
@@ -59,6 +61,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
     if (auto it = step.targets.find(model_.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
   const auto at = [&](double t) {
     LoadState l = start;
+    l.step = s;
     for (std::size_t k = 0; k < l.boundary.size(); ++k) l.boundary[k] += t * (end.boundary[k] - start.boundary[k]);
     for (std::size_t k = 0; k < l.pressure.size(); ++k) l.pressure[k] += t * (end.pressure[k] - start.pressure[k]);
     return l;
