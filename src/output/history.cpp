@@ -25,7 +25,34 @@ double reduce(const std::vector<double>& v, Reduce how) {
   return s / static_cast<double>(v.size());
 }
 
+/// Axisymmetric cylindrical quantities of a membrane point (its Cauchy tensor in the meridian
+/// plane θ = 0: x = r, y = hoop, z = z); `found` is false if `q` is not one of them.
+double cylindrical_value(const Eigen::Matrix3d& c, const std::string& q, bool& found) {
+  found = true;
+  if (q == "sigma_rr") return c(0, 0);
+  if (q == "sigma_thetatheta") return c(1, 1);
+  if (q == "sigma_zz") return c(2, 2);
+  if (q == "sigma_rz") return c(0, 2);
+  if (q == "hydrostatic_pressure") return -c.trace() / 3.0;
+  if (q == "volume_ratio") return 1.0;
+  found = false;
+  return 0;
+}
+
+double point_value(const SolidPoint& p, const std::string& q) {
+  if (q == "sigma_rr") return p.sigma(0);
+  if (q == "sigma_zz") return p.sigma(1);
+  if (q == "sigma_thetatheta") return p.sigma(2);
+  if (q == "sigma_rz") return p.sigma(3);
+  if (q == "hydrostatic_pressure") return -(p.sigma(0) + p.sigma(1) + p.sigma(2)) / 3.0;
+  if (q == "volume_ratio") return p.J;
+  if (q == "radius") return p.r;
+  throw std::logic_error("unknown solid quantity " + q);
+}
+
 double point_value(const MembranePoint& p, const std::string& q) {
+  bool cylindrical = false;
+  if (const double v = cylindrical_value(p.cauchy, q, cylindrical); cylindrical) return v;
   if (q == "lambda_1") return p.lambda(0);
   if (q == "lambda_2") return p.lambda(1);
   if (q == "lambda_3") return p.lambda(2);
@@ -65,6 +92,7 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
   const Model& m = a.model();
   std::vector<double> out;
   std::vector<std::vector<MembranePoint>> points(m.parts.size());
+  std::vector<std::vector<SolidPoint>> solid_points(m.parts.size());
   for (const auto& r : m.output.history) {
     double v = 0;
     if (r.quantity == "time") {
@@ -75,6 +103,11 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
       std::vector<double> vals;
       for (const auto& c : a.system().contact_states(a.displacement(), r.contact))
         vals.push_back(r.quantity == "contact_force" ? c.force : c.pressure);
+      v = reduce(vals, r.reduce);
+    } else if (r.part >= 0 && m.parts[r.part].is_solid()) {
+      if (solid_points[r.part].empty()) solid_points[r.part] = a.system().solid_points(a.displacement(), r.part);
+      std::vector<double> vals;
+      for (const auto& p : solid_points[r.part]) vals.push_back(point_value(p, r.quantity));
       v = reduce(vals, r.reduce);
     } else if (r.part >= 0) {
       if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numbers>
 
 #include "output/atomic_file.hpp"
@@ -19,23 +20,52 @@ struct CellField {
   int components = 1;
 };
 
-/// Cell-averaged Gauss-point fields of all parts, in part/element order.
+/// Cell-averaged Gauss-point fields of all parts of an axisymmetric model, in part/element order.
+/// Membrane fields (the first 8) are NaN on solid cells. Every cell has the Cauchy stress in
+/// cylindrical axes (σ_rr, σ_θθ, σ_zz, σ_rz), the hydrostatic pressure −tr σ/3 and J: solids from
+/// their Gauss points; membranes from σ = σ_ss t⊗t + σ_θθ e_θ⊗e_θ (t the meridian tangent; a tube's
+/// σ_zz is its meridional stress, σ_rr = σ_rz = 0) and J = 1.
 std::vector<CellField> cell_fields(const Analysis& a) {
   const Model& m = a.model();
   const std::string s = unit_suffix(m.units, Dimension::pressure);
   const std::string l = unit_suffix(m.units, Dimension::length);
   std::vector<CellField> f = {{"lambda_hoop", {}},       {"lambda_meridional", {}}, {"lambda_thickness", {}},
                               {"S_hoop" + s, {}},        {"S_meridional" + s, {}},  {"sigma_hoop" + s, {}},
-                              {"sigma_meridional" + s, {}}, {"thickness" + l, {}},  {"part", {}}};
+                              {"sigma_meridional" + s, {}}, {"thickness" + l, {}},  {"part", {}},
+                              {"sigma_rr" + s, {}},      {"sigma_thetatheta" + s, {}}, {"sigma_zz" + s, {}},
+                              {"sigma_rz" + s, {}},      {"hydrostatic_pressure" + s, {}}, {"J", {}}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    if (m.parts[p].is_solid()) {
+      const auto pts = a.system().solid_points(a.displacement(), static_cast<int>(p));
+      for (std::size_t e = 0; 4 * e + 3 < pts.size(); ++e) {
+        Eigen::Vector4d sigma = Eigen::Vector4d::Zero();  // (rr, zz, θθ, rz)
+        double J = 0;
+        for (int g = 0; g < 4; ++g) {
+          sigma += 0.25 * pts[4 * e + g].sigma;
+          J += 0.25 * pts[4 * e + g].J;
+        }
+        const double v[15] = {nan, nan, nan, nan, nan, nan, nan, nan, static_cast<double>(p),
+                              sigma(0), sigma(2), sigma(1), sigma(3), -(sigma(0) + sigma(1) + sigma(2)) / 3.0, J};
+        for (int k = 0; k < 15; ++k) f[k].values.push_back(v[k]);
+      }
+      continue;
+    }
     const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
     for (std::size_t e = 0; 2 * e + 1 < pts.size(); ++e) {
       const MembranePoint& g0 = pts[2 * e];
       const MembranePoint& g1 = pts[2 * e + 1];
-      const double v[9] = {g0.lambda(0) + g1.lambda(0), g0.lambda(1) + g1.lambda(1), g0.lambda(2) + g1.lambda(2),
-                           g0.S(0) + g1.S(0),           g0.S(1) + g1.S(1),           g0.sigma(0) + g1.sigma(0),
-                           g0.sigma(1) + g1.sigma(1),   g0.thickness + g1.thickness, 2.0 * p};
-      for (int k = 0; k < 9; ++k) f[k].values.push_back(0.5 * v[k]);
+      // The Cauchy tensor in the meridian plane θ = 0: x = r, y = hoop, z = z.
+      const Eigen::Matrix3d c = 0.5 * (g0.cauchy + g1.cauchy);
+      const double v[15] = {0.5 * (g0.lambda(0) + g1.lambda(0)), 0.5 * (g0.lambda(1) + g1.lambda(1)),
+                            0.5 * (g0.lambda(2) + g1.lambda(2)), 0.5 * (g0.S(0) + g1.S(0)),
+                            0.5 * (g0.S(1) + g1.S(1)),           0.5 * (g0.sigma(0) + g1.sigma(0)),
+                            0.5 * (g0.sigma(1) + g1.sigma(1)),   0.5 * (g0.thickness + g1.thickness),
+                            static_cast<double>(p),              c(0, 0),
+                            c(1, 1),                             c(2, 2),
+                            c(0, 2),                             -c.trace() / 3.0,
+                            1.0};
+      for (int k = 0; k < 15; ++k) f[k].values.push_back(v[k]);
     }
   }
   return f;
@@ -106,18 +136,6 @@ std::string grid(const std::vector<double>& points, const std::vector<std::int64
   return s + "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 }
 
-/// Uniform cells of `nodes_per_cell` nodes and one VTK type.
-std::string uniform_grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
-                         int nodes_per_cell, std::uint8_t vtk_type, const std::vector<double>& displacement,
-                         const std::vector<CellField>& cells, int cell_repeat,
-                         const std::vector<CellField>& point_fields = {}) {
-  const std::size_t nc = connectivity.size() / nodes_per_cell;
-  std::vector<std::int64_t> offsets(nc);
-  for (std::size_t c = 0; c < nc; ++c) offsets[c] = static_cast<std::int64_t>((c + 1) * nodes_per_cell);
-  return grid(points, connectivity, offsets, std::vector<std::uint8_t>(nc, vtk_type), displacement, cells, cell_repeat,
-              point_fields);
-}
-
 /// Cell averages of the Gauss-point states of a 3-D model, with the material frame and the Cauchy tensor.
 std::vector<CellField> surface_cell_fields(const Analysis& a) {
   const Model& m = a.model();
@@ -186,11 +204,19 @@ std::string meridian_vtu(const Analysis& a) {
     pts.insert(pts.end(), {m.X[n](0) + ur, 0.0, m.X[n](1) + uz});
     disp.insert(disp.end(), {ur, 0.0, uz});
   }
-  std::vector<std::int64_t> conn;
+  // Membranes as lines, solids as their quadrilaterals (counter-clockwise in the (r, z) plane).
+  std::vector<std::int64_t> conn, offsets;
+  std::vector<std::uint8_t> types;
   for (const auto& p : m.parts)
-    for (const auto& b : p.blocks)
-      for (int e = 0; e < b.size(); ++e) conn.insert(conn.end(), {b.element(e)[0], b.element(e)[1]});
-  return uniform_grid(pts, conn, 2, 3 /*VTK_LINE*/, disp, cell_fields(a), 1, contact_point_fields(a));
+    for (const auto& b : p.blocks) {
+      const int nen = nodes_per_element(b.kind);
+      for (int e = 0; e < b.size(); ++e) {
+        conn.insert(conn.end(), b.element(e), b.element(e) + nen);
+        offsets.push_back(static_cast<std::int64_t>(conn.size()));
+        types.push_back(nen == 2 ? 3 /*VTK_LINE*/ : 9 /*VTK_QUAD*/);
+      }
+    }
+  return grid(pts, conn, offsets, types, disp, cell_fields(a), 1, contact_point_fields(a));
 }
 
 std::string surface_vtu(const Analysis& a, int segments) {
@@ -206,17 +232,28 @@ std::string surface_vtu(const Analysis& a, int segments) {
       disp.insert(disp.end(), {ur * c, ur * s, uz});
     }
   }
-  std::vector<std::int64_t> conn;
+  // Membranes revolve into quadrilaterals, solids into hexahedra: the element's quadrilateral at the
+  // angle of hoop node k (bottom face, its normal −e_θ points towards hoop node j) and at hoop node j.
+  std::vector<std::int64_t> conn, offsets;
+  std::vector<std::uint8_t> types;
   for (const auto& p : m.parts)
     for (const auto& b : p.blocks)
       for (int el = 0; el < b.size(); ++el) {
         const int* e = b.element(el);
         for (int j = 0; j < segments; ++j) {
           const int k = (j + 1) % segments;
-          conn.insert(conn.end(), {e[0] * segments + j, e[1] * segments + j, e[1] * segments + k, e[0] * segments + k});
+          if (b.kind == ElementKind::solid4) {
+            for (int hoop : {k, j})
+              for (int q = 0; q < 4; ++q) conn.push_back(static_cast<std::int64_t>(e[q]) * segments + hoop);
+            types.push_back(12 /*VTK_HEXAHEDRON*/);
+          } else {
+            conn.insert(conn.end(), {e[0] * segments + j, e[1] * segments + j, e[1] * segments + k, e[0] * segments + k});
+            types.push_back(9 /*VTK_QUAD*/);
+          }
+          offsets.push_back(static_cast<std::int64_t>(conn.size()));
         }
       }
-  return uniform_grid(pts, conn, 4, 9 /*VTK_QUAD*/, disp, cell_fields(a), segments, contact_point_fields(a));
+  return grid(pts, conn, offsets, types, disp, cell_fields(a), segments, contact_point_fields(a));
 }
 
 std::string surface3d_vtu(const Analysis& a) {

@@ -1,7 +1,8 @@
 #pragma once
 // ParaView output. Axisymmetric models: the meridian as line cells in the
-// (x = r, z) plane, and the membrane revolved about the z axis as a 3-D
-// surface of quadrilaterals. 3-D models: the membrane surface (triangles and
+// (x = r, z) plane (solid parts: their quadrilaterals), and the model revolved
+// about the z axis: membranes as a 3-D surface of quadrilaterals, solids as
+// hexahedra; cell data include the cylindrical Cauchy components for all parts. 3-D models: the membrane surface (triangles and
 // quadrilaterals) with cell-averaged strains and stresses in the material frame,
 // the principal Cauchy stresses, the Cauchy tensor and the material directions.
 // One .vtu per increment and a .pvd series of each.
@@ -12,9 +13,9 @@
 
 namespace tunica {
 
-/// The meridian (lines) at the current state as VTK XML UnstructuredGrid text.
+/// The meridian (lines; solids: quadrilaterals) at the current state as VTK XML UnstructuredGrid text.
 std::string meridian_vtu(const Analysis& analysis);
-/// The revolved surface (quads, `segments` around the axis) as VTK XML text.
+/// The revolved model (membrane quads, solid hexahedra, `segments` around the axis) as VTK XML text.
 std::string surface_vtu(const Analysis& analysis, int segments);
 
 /// The surface of a 3-D model at the current state as VTK XML text.

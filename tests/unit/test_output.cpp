@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "../support/capture.hpp"
+#include "../support/vtu.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -74,32 +75,6 @@ TEST(Output, ParaViewSeriesListEveryFrameWithConsistentGrids) {
       EXPECT_NE(last.find(std::string("Name=\"") + field + "\""), std::string::npos) << series << " " << field;
     EXPECT_EQ(count(last, "<DataArray"), count(last, "</DataArray>"));
   }
-}
-
-/// Decodes VTK's inline binary DataArray: base64 of a UInt64 byte count followed by the values.
-std::vector<double> decode_float64(const std::string& vtu, const std::string& name) {
-  const auto begin = vtu.find('>', vtu.find("Name=\"" + name + "\"")) + 1;
-  std::string text = vtu.substr(begin, vtu.find("</DataArray>", begin) - begin);
-  std::string bytes;
-  unsigned buffer = 0;
-  int bits = 0;
-  for (char ch : text) {
-    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    const char* p = std::strchr(alphabet, ch);
-    if (ch == '=' || ch == '\n' || !p || ch == 0) continue;
-    buffer = (buffer << 6) | static_cast<unsigned>(p - alphabet);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      bytes.push_back(static_cast<char>((buffer >> bits) & 0xff));
-    }
-  }
-  std::uint64_t count = 0;
-  std::memcpy(&count, bytes.data(), 8);
-  EXPECT_EQ(count + 8, bytes.size()) << name;
-  std::vector<double> v(count / 8);
-  std::memcpy(v.data(), bytes.data() + 8, count);
-  return v;
 }
 
 TEST(Output, RevolvedSurfaceLiesAtTheReportedRadius) {
