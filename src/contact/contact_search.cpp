@@ -14,7 +14,7 @@ Eigen::Vector2d segment_normal(const Eigen::Vector2d& a, const Eigen::Vector2d& 
 }
 
 ChainProjection project_on_chain(const Eigen::Vector2d& x, const Eigen::Ref<const Eigen::Matrix2Xd>& chain,
-                                 double search_radius) {
+                                 double search_radius, double end_tolerance) {
   const int m = static_cast<int>(chain.cols());
   if (m < 2) throw std::invalid_argument("contact: a master chain needs at least two nodes");
 
@@ -45,7 +45,10 @@ ChainProjection project_on_chain(const Eigen::Vector2d& x, const Eigen::Ref<cons
   ChainProjection p;
   if (k_best < 0) return p;
   const Eigen::Vector2d a = chain.col(k_best), b = chain.col(k_best + 1);
-  if (xi_best >= 0 && xi_best <= 1) {
+  // Within the end tolerance beyond the first or last node: still that end segment.
+  const bool near_start = k_best == 0 && xi_best < 0 && xi_best >= -end_tolerance;
+  const bool near_end = k_best == m - 2 && xi_best > 1 && xi_best <= 1 + end_tolerance;
+  if ((xi_best >= 0 && xi_best <= 1) || near_start || near_end) {
     p.feature = ChainFeature::segment;
     p.segment = k_best;
     p.xi = xi_best;

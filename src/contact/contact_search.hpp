@@ -26,7 +26,11 @@
 //            unless an offset rounds the corner), σ = −1 at a concave corner
 //            (x has penetrated into the corner);
 //   none     if ξ_{k*} ∉ [0, 1] at an end node of the chain (x lies beyond the
-//            chain's end: the chain has no side there, never in contact).
+//            chain's end: the chain has no side there, never in contact) —
+//            except within the caller's end tolerance τ ≥ 0: ξ ∈ [−τ, 0) on the
+//            first segment or (1, 1 + τ] on the last counts as that segment (two
+//            bodies ending in the same plane z = const, both held there, keep
+//            their end nodes in contact whatever the round-off in ξ; τ = 0: none).
 // s is the signed distance of x to the chain (positive on the normal side). It
 // is continuous in x, and so is its gradient across the segment/vertex borders
 // (there x − P_v = s n); the gradient jumps only where two segments are equally
@@ -84,8 +88,10 @@ Eigen::Vector2d segment_normal(const Eigen::Vector2d& a, const Eigen::Vector2d& 
 /// The feature of `chain` (2×m, m ≥ 2, columns (r, z)) nearest to x, within
 /// `search_radius` (features farther away are ignored). Throws
 /// std::invalid_argument if m < 2, std::domain_error if a segment has zero length.
+/// `end_tolerance` τ: see the header comment (the ends of the chain).
 ChainProjection project_on_chain(const Eigen::Vector2d& x, const Eigen::Ref<const Eigen::Matrix2Xd>& chain,
-                                 double search_radius = std::numeric_limits<double>::infinity());
+                                 double search_radius = std::numeric_limits<double>::infinity(),
+                                 double end_tolerance = 0);
 
 /// project_on_chain for every column of `slaves` (2×S): the search for a whole
 /// slave surface, O(S·m).

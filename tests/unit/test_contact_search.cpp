@@ -257,3 +257,20 @@ TEST(ContactForce, TributaryAreas) {
   EXPECT_NEAR(A(1), two_pi * 1.0 * 0.75, 1e-14);
   EXPECT_NEAR(A(2), two_pi * 2.0 * 0.5, 1e-14);
 }
+
+TEST(ContactSearch, EndToleranceKeepsNodesAtTheChainsEndsOnTheEndSegments) {
+  // A master running +z (normal +r) from z = 0 to z = 1; slave nodes in the planes of its ends,
+  // beyond them by round-off (ξ ≈ −1e-13, 1 + 1e-13) or by more than the tolerance.
+  Eigen::Matrix2Xd chain(2, 3);
+  chain << 1.2, 1.2 + 1e-13, 1.2, 0.0, 0.5, 1.0;
+  const double tol = 1e-9;
+  const Eigen::Vector2d below(1.1, -1e-13), above(1.1, 1.0 + 1e-13), far(1.1, -1e-6);
+  for (const auto& x : {below, above}) {
+    EXPECT_EQ(project_on_chain(x, chain).feature, ChainFeature::none);  // τ = 0: beyond the end
+    const ChainProjection p = project_on_chain(x, chain, std::numeric_limits<double>::infinity(), tol);
+    EXPECT_EQ(p.feature, ChainFeature::segment);
+    EXPECT_NEAR(p.signed_distance, -0.1, 1e-12);  // on the inner side of the line
+    EXPECT_EQ(p.segment, x(1) < 0.5 ? 0 : 1);
+  }
+  EXPECT_EQ(project_on_chain(far, chain, std::numeric_limits<double>::infinity(), tol).feature, ChainFeature::none);
+}
