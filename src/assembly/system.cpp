@@ -38,6 +38,8 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
           for (int b = 0; b < nen; ++b) adjacent[en[a]].push_back(en[b]);
       }
     }
+  // Deformable contact pairs: every slave node with every master node (contact_assembly.hpp).
+  ContactAssembly::add_couplings(model, adjacent);
   std::vector<int> outer(num_free_ + 1, 0), inner;
   for (int node = 0; node < model.num_nodes(); ++node) {
     auto& adj = adjacent[node];
@@ -93,27 +95,9 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     }
   }
 
-  // Contact: a slave node's tangent couples its own DOFs only. Every node of an element is
-  // adjacent to itself, so the pattern already holds these entries; check it.
-  for (const auto& pair : model.contacts) {
-    std::vector<std::array<int, 4>> pos;
-    for (int node : pair.nodes) {
-      std::array<int, 4> q{};
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) {
-          const int i = eq_[2 * node + a], j = eq_[2 * node + b];
-          int k = -1;
-          if (i >= 0 && j >= 0) {
-            k = position(i, j);
-            if (k >= pattern_.outerIndexPtr()[j + 1] || pattern_.innerIndexPtr()[k] != i)
-              throw std::logic_error("contact: a slave node's DOFs are missing from the tangent's pattern");
-          }
-          q[2 * a + b] = k;
-        }
-      pos.push_back(q);
-    }
-    contact_pos_.push_back(std::move(pos));
-  }
+  // Contact: rigid pairs' slave blocks are in the pattern (every node couples with itself),
+  // deformable pairs' contact elements by the couplings added above.
+  contact_ = std::make_unique<ContactAssembly>(model, eq_, pattern_);
 
   // Parts that enter later: the step from which each DOF may move, and the held free DOFs.
   dof_enter_.assign(n, 0);
@@ -383,17 +367,6 @@ void System::assemble_surface(int p, int b, const Eigen::VectorXd& u, double pre
   for (double s2 : scale_e) scale2 += s2;
 }
 
-namespace {
-
-/// Slave node at x_s against rigid surface `r`: state, f (2) and, if K is given, K (2×2).
-ContactPoint rigid_contact(const RigidSurface& r, const Eigen::Vector2d& xs, double area, const ContactLaw& law,
-                           Eigen::Vector2d& f, Eigen::Matrix2d* K) {
-  return r.type == RigidSurface::Type::cylinder ? rigid_cylinder_contact(r.cylinder, xs, area, law, f, K)
-                                                : rigid_polyline_contact(r.polyline, xs, area, law, f, K);
-}
-
-}  // namespace
-
 void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                       double* force_scale, int* active_contacts) const {
   R.setZero(num_dofs());
@@ -421,57 +394,16 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
     }
   }
   assemble_held(loads.step, u, R, K);
-  // Contact, serially in pair and node order (deterministic): R += f, K += ∂f/∂x_s on the slave DOFs.
+  // Contact, serially in pair and node order (deterministic), after the elements; pairs with a
+  // part that has not entered yet are skipped.
   int active = 0;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const ContactPair& pair = model_.contacts[c];
-    if (!model_.part_active(pair.part, loads.step)) continue;
-    const RigidSurface& rigid = model_.rigid_surfaces[pair.rigid];
-    for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
-      const int n = pair.nodes[k];
-      const Eigen::Vector2d xs = model_.X[n].head<2>() + u.segment<2>(2 * n);
-      Eigen::Vector2d f;
-      Eigen::Matrix2d Kc;
-      const ContactPoint cp = rigid_contact(rigid, xs, pair.areas[k], pair.law, f, K ? &Kc : nullptr);
-      if (!cp.active) continue;
-      ++active;
-      R.segment<2>(2 * n) += f;
-      scale2 += f.squaredNorm();
-      // The gap is a difference of coordinates: its round-off is ~ε_mach |x_s|, times the penalty stiffness.
-      if (K) scale2 += Kc.squaredNorm() * xs.squaredNorm();
-      if (K) {
-        double* values = K->valuePtr();
-        for (int q = 0; q < 4; ++q)
-          if (const int pos = contact_pos_[c][k][q]; pos >= 0) values[pos] += Kc(q / 2, q % 2);
-      }
-    }
-  }
+  contact_->assemble(u, loads.step, R, K, scale2, active);
   if (active_contacts) *active_contacts = active;
   if (force_scale) *force_scale = std::sqrt(scale2);
 }
 
 std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, int c) const {
-  const ContactPair& pair = model_.contacts[c];
-  const Part& part = model_.parts[pair.part];
-  // Current tributary areas on the slave part's current meridian.
-  Eigen::Matrix2Xd chain(2, static_cast<Eigen::Index>(part.nodes.size()));
-  for (std::size_t i = 0; i < part.nodes.size(); ++i)
-    chain.col(static_cast<Eigen::Index>(i)) = model_.X[part.nodes[i]].head<2>() + u.segment<2>(2 * part.nodes[i]);
-  const Eigen::VectorXd current = slave_tributary_areas(chain);
-  std::vector<ContactNodeState> out;
-  for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
-    ContactNodeState s;
-    s.node = pair.nodes[k];
-    const Eigen::Vector2d xs = model_.X[s.node].head<2>() + u.segment<2>(2 * s.node);
-    Eigen::Vector2d f;
-    s.point = rigid_contact(model_.rigid_surfaces[pair.rigid], xs, pair.areas[k], pair.law, f, nullptr);
-    s.force = s.point.pressure * pair.areas[k];
-    const auto i = std::find(part.nodes.begin(), part.nodes.end(), s.node) - part.nodes.begin();
-    const double a = current(i);
-    s.pressure = a > 0 ? s.force / a : s.point.pressure;
-    out.push_back(s);
-  }
-  return out;
+  return contact_->states(u, c);
 }
 
 Eigen::VectorXd System::pressure_load(const Eigen::VectorXd& u, int l) const {

@@ -1,7 +1,8 @@
 #pragma once
 // The discrete system of a model: DOF numbering with prescribed DOFs removed,
 // the sparsity pattern of the free-DOF tangent computed once (from the node
-// adjacency of the elements), each element's scatter positions into it, the
+// adjacency of the elements and of the deformable contact pairs, see
+// contact_assembly.hpp), each element's scatter positions into it, the
 // reference data of the 3-D elements computed once, and the assembly of the
 // residual R = f_int − f_ext (all DOFs, so reactions can be read) and of
 // K = ∂R/∂u (free DOFs only) from the element and load kernels.
@@ -20,24 +21,17 @@
 // whatever the number of threads: results are identical bit for bit.
 #include <Eigen/Sparse>
 #include <array>
+#include <memory>
 #include <vector>
 
+#include "assembly/contact_assembly.hpp"
 #include "assembly/references.hpp"
+#include "assembly/sparse_matrix.hpp"
 #include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-/// The contact state of one slave node of a contact pair (Model::contacts).
-struct ContactNodeState {
-  int node = -1;
-  ContactPoint point;    ///< gap, ε⟨−g_N⟩ (per reference area), normal, ...
-  double force = 0;      ///< normal force ε⟨−g_N⟩ A_s on the node (whole circumference)
-  double pressure = 0;   ///< contact pressure on the current tributary area: force / a_s
-};
 
 /// Current values of the boundary and load amplitudes.
 struct LoadState {
@@ -64,9 +58,10 @@ public:
   /// `force_scale`, if given, receives a yardstick for round-off in R: sqrt(Σ_e ‖f_int,e‖² +
   /// ‖f_ext,e‖² + (‖K_e‖ L_e)²), the forces that cancel in R and, when K is assembled, the
   /// stiffness × element size that bounds round-off of stresses computed near zero strain.
-  /// Contact pairs add each active slave node's penalty force and 2×2 tangent (slave DOFs only),
-  /// and ‖f_c‖² + (‖K_c‖ |x_s|)² to the yardstick (the gap is a difference of coordinates);
-  /// `active_contacts`, if given, receives the number of active slave nodes.
+  /// Contact pairs add each active slave node's penalty force and tangent (contact_assembly.hpp:
+  /// rigid pairs on the slave's DOFs, deformable pairs on the slave's and the master segment's),
+  /// and ‖f_c‖² + (‖K_c‖ |x|)² to the yardstick (the gap is a difference of coordinates);
+  /// `active_contacts`, if given, receives the number of active slave nodes (all pairs).
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                 double* force_scale = nullptr, int* active_contacts = nullptr) const;
   /// Contact state of every slave node of contact pair `c` at u, in the pair's node order.
@@ -123,8 +118,6 @@ private:
   int num_free_ = 0;
   SparseMatrix pattern_;
   std::vector<std::vector<Block>> blocks_;  ///< per part, per block
-  /// Per contact pair, per slave node: positions of its 2×2 block (rr, rz, zr, zz) in K's values (−1: not free-free).
-  std::vector<std::vector<std::array<int, 4>>> contact_pos_;
   /// Per DOF: the step from which it is free to move (the lowest enter_step of the parts using its node; 0 if none).
   std::vector<int> dof_enter_;
   /// Free DOFs that may be held: DOF, position of K_ii in K's values, k_i.
@@ -133,6 +126,8 @@ private:
     double k = 1;
   };
   std::vector<HeldDof> held_;
+  /// The contact pairs' contributions (built after the pattern, which holds their couplings).
+  std::unique_ptr<ContactAssembly> contact_;
 };
 
 /// Greedy colouring of elements so that no two of a colour share a node: `order` lists the

@@ -10,10 +10,10 @@
 #include <set>
 #include <sstream>
 
+#include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
-#include "contact/axisym_contact.hpp"
 #include "mesh/meridian.hpp"
 
 namespace tunica {
@@ -86,49 +86,6 @@ const ComponentSpec& load_spec() {
        with_default(numbers("volume_point", Dimension::length, 3, "3-D: the point p₀ of the volume measure"),
                     "[0, 0, 0]"),
        numbers("volume_axis", Dimension::dimensionless, 3, "3-D: measure the volume about this axis through p₀")}};
-  return s;
-}
-
-const ComponentSpec& cylinder_spec() {
-  static const ComponentSpec s{
-      "rigid_surfaces", "cylinder",
-      "Axisymmetric models: a rigid cylinder r = R_c about the z axis, unbounded in z, fixed. The slave "
-      "nodes of a `contact` pair are kept outside it (r ≥ R_c, e.g. a balloon on a catheter) or inside it "
-      "(r ≤ R_c, e.g. a rigid tube around an artery).",
-      {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
-       required(positive(number("radius", Dimension::length, "radius R_c"))),
-       required(one_of(text("side", "the side where the slave nodes belong"), {"outside", "inside"}))}};
-  return s;
-}
-
-const ComponentSpec& polyline_spec() {
-  static const ComponentSpec s{
-      "rigid_surfaces", "polyline",
-      "Axisymmetric models: a rigid open polyline in the (r, z) meridian plane (a surface of revolution), "
-      "fixed. Its contact normal is the direction of travel turned clockwise: order the points so that "
-      "the slave nodes lie on the right of the direction of travel (e.g. from larger to smaller r for a "
-      "plane z = const with the slave above it). Beyond the ends of the chain there is no contact.",
-      {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
-       required(structured("points", "list", "at least 2 points `[r, z]` (lengths), e.g. `[[2 mm, 0], [0.5 mm, 0]]`"))}};
-  return s;
-}
-
-const ComponentSpec& contact_spec() {
-  static const ComponentSpec s{
-      "contact", "",
-      "Axisymmetric models: frictionless penalty contact of the nodes of an axisymmetric membrane (the "
-      "slave) with a rigid surface. Each slave node s stands for its tributary reference area A_s = 2π R_s "
-      "(L_left + L_right)/2 and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = (signed distance to the surface) − "
-      "offset; it is active when g_N < 0. The contact pressure ε⟨−g_N⟩ is per reference area; the outputs "
-      "`contact_pressure` divide the normal force ε⟨−g_N⟩ A_s by the current tributary area.",
-      {required(text("slave", "name of an axisymmetric part, or of a node set of one")),
-       required(text("rigid", "name of a surface in `rigid_surfaces`")),
-       required(positive(number("penalty", Dimension::penalty,
-                                "penalty ε: contact pressure per unit penetration (the penetration is p_c/ε)"))),
-       with_default(at_least(number("offset", Dimension::length,
-                                    "c: contact starts at the distance c from the surface (e.g. half a thickness)"),
-                             0.0),
-                    "0")}};
   return s;
 }
 
@@ -438,95 +395,6 @@ void read_loads(const DeckNode& deck, Model& m) {
   }
 }
 
-void read_rigid_surfaces(const DeckNode& deck, Model& m) {
-  if (!deck.has("rigid_surfaces")) return;
-  const DeckNode sec = deck["rigid_surfaces"];
-  if (m.geometry != Geometry::axisymmetric)
-    sec.fail("rigid surfaces and contact need an axisymmetric model (parts with element: axisymmetric_membrane)");
-  if (!sec.is_map()) sec.fail("expected a map of rigid surfaces (name: {type: cylinder|polyline, ...})");
-  for (const auto& [name, node] : sec.entries()) {
-    if (!node.is_map()) node.fail("expected a map with `type: cylinder` or `type: polyline`");
-    const std::string type = node.required("type").as_string();
-    RigidSurface r;
-    r.name = name;
-    r.where = node.where();
-    if (type == "cylinder") {
-      const Params p = read_params(node, cylinder_spec(), m.units);
-      r.type = RigidSurface::Type::cylinder;
-      r.cylinder.radius = p.number("radius");
-      r.cylinder.side = p.text("side") == "inside" ? CylinderSide::inside : CylinderSide::outside;
-    } else if (type == "polyline") {
-      read_params(node, polyline_spec(), m.units);
-      r.type = RigidSurface::Type::polyline;
-      const DeckNode pts = node["points"];
-      if (!pts.is_sequence()) pts.fail("expected a list of points [r, z]");
-      const auto items = pts.items();
-      if (items.size() < 2) pts.fail(fmt::format("a polyline needs at least 2 points, got {}", items.size()));
-      r.polyline.points.resize(2, static_cast<Eigen::Index>(items.size()));
-      for (std::size_t i = 0; i < items.size(); ++i) {
-        if (!items[i].is_sequence() || items[i].items().size() != 2) items[i].fail("expected a point [r, z]");
-        for (int c = 0; c < 2; ++c)
-          r.polyline.points(c, static_cast<Eigen::Index>(i)) = read_quantity(items[i].items()[c], Dimension::length, m.units);
-        if (i > 0 && (r.polyline.points.col(i) - r.polyline.points.col(i - 1)).norm() == 0)
-          items[i].fail("a polyline point repeats the previous one (a segment of zero length)");
-      }
-    } else {
-      node["type"].fail("unknown rigid surface type '" + type + "' (known: cylinder, polyline)");
-    }
-    m.rigid_surfaces.push_back(std::move(r));
-  }
-}
-
-void read_contacts(const DeckNode& deck, Model& m) {
-  if (!deck.has("contact")) return;
-  const DeckNode sec = deck["contact"];
-  if (m.geometry != Geometry::axisymmetric)
-    sec.fail("rigid surfaces and contact need an axisymmetric model (parts with element: axisymmetric_membrane)");
-  if (!sec.is_map()) sec.fail("expected a map of contact pairs (name: {slave: ..., rigid: ..., penalty: ...})");
-  for (const auto& [name, node] : sec.entries()) {
-    const Params p = read_params(node, contact_spec(), m.units);
-    ContactPair c;
-    c.name = name;
-    c.where = node.where();
-    c.law.penalty = p.number("penalty");
-    c.law.offset = p.number("offset");
-    const std::string& rigid = p.text("rigid");
-    auto r = std::find_if(m.rigid_surfaces.begin(), m.rigid_surfaces.end(), [&](auto& x) { return x.name == rigid; });
-    if (r == m.rigid_surfaces.end()) p.fail("rigid", "undefined rigid surface '" + rigid + "'");
-    c.rigid = static_cast<int>(r - m.rigid_surfaces.begin());
-    // The slave: a part (all its nodes) or a node set within one part.
-    const std::string& slave = p.text("slave");
-    std::vector<int> wanted;
-    c.part = m.find_part(slave);
-    if (c.part < 0) {
-      const int s = m.find_node_set(slave);
-      if (s < 0) p.fail("slave", "undefined part or node set '" + slave + "'");
-      wanted = m.node_sets[s].nodes;
-      if (wanted.empty()) p.fail("slave", "node set '" + slave + "' is empty");
-      for (std::size_t k = 0; k < m.parts.size() && c.part < 0; ++k)
-        if (std::find(m.parts[k].nodes.begin(), m.parts[k].nodes.end(), wanted.front()) != m.parts[k].nodes.end())
-          c.part = static_cast<int>(k);
-    }
-    if (c.part >= 0 && m.parts[c.part].is_solid())
-      p.fail("slave", "the slave of a rigid contact pair must be (on) an axisymmetric membrane part; '" + slave +
-                          "' is (on) a solid part");
-    const Part& part = m.parts[c.part];
-    if (wanted.empty()) wanted = part.nodes;
-    Eigen::Matrix2Xd chain(2, static_cast<Eigen::Index>(part.nodes.size()));
-    for (std::size_t i = 0; i < part.nodes.size(); ++i) chain.col(static_cast<Eigen::Index>(i)) = m.X[part.nodes[i]].head<2>();
-    const Eigen::VectorXd areas = slave_tributary_areas(chain);
-    for (int n : wanted)
-      if (std::find(part.nodes.begin(), part.nodes.end(), n) == part.nodes.end())
-        p.fail("slave", "the nodes of node set '" + slave + "' are not all on one part");
-    for (std::size_t i = 0; i < part.nodes.size(); ++i)  // meridian order, no duplicates
-      if (std::find(wanted.begin(), wanted.end(), part.nodes[i]) != wanted.end()) {
-        c.nodes.push_back(part.nodes[i]);
-        c.areas.push_back(areas(static_cast<Eigen::Index>(i)));
-      }
-    m.contacts.push_back(std::move(c));
-  }
-}
-
 /// The part entering latest (highest enter_step) among those a boundary or load named `target`
 /// acts on (a boundary: the parts holding a node of its set), or −1 if all of them are there from the start.
 int entering_part(const Model& m, const std::string& target) {
@@ -648,7 +516,7 @@ void read_output(const DeckNode& deck, Model& m) {
     }
     const bool reaction = r.quantity.rfind("reaction_", 0) == 0;
     r.reduce = reaction || r.quantity == "contact_force" ? Reduce::sum
-               : r.quantity == "contact_pressure"       ? Reduce::max
+               : r.quantity == "contact_pressure" || r.quantity == "contact_penetration" ? Reduce::max
                                                         : Reduce::mean;
     if (h.has("reduce")) {
       const std::string& s = h.text("reduce");
@@ -731,6 +599,8 @@ const std::vector<HistoryQuantity>& history_quantities() {
        "area (default reduce: max)"},
       {"contact_force", "contact", Dimension::force,
        "normal contact force ε⟨−g_N⟩ A_s of the slave nodes, whole circumference (default reduce: sum, the total)"},
+      {"contact_penetration", "contact", Dimension::length,
+       "penetration ⟨−g_N⟩ of the slave nodes (0 off contact; g_N = distance − offset; default reduce: max)"},
   };
   return q;
 }

@@ -105,17 +105,26 @@ struct RigidSurface {
   SourceLocation where;
 };
 
-/// Frictionless penalty contact of the nodes of an axisymmetric membrane (slave) with a rigid
-/// surface: Π = ½ ε ⟨−g_N⟩² A_s per slave node (contact/axisym_contact.hpp).
+/// Frictionless penalty contact of the nodes of an axisymmetric membrane or an ordered node set
+/// (slave) with a rigid surface or with a deformable master chain of nodes:
+/// Π = ½ ε ⟨−g_N⟩² A_s per slave node (contact/axisym_contact.hpp).
 struct ContactPair {
   std::string name;
-  int rigid = -1;               ///< index into Model::rigid_surfaces
-  int part = -1;                ///< the slave part (its reference meridian gives the areas)
-  std::vector<int> nodes;       ///< slave nodes (global numbers, in meridian order)
-  std::vector<double> areas;    ///< their tributary reference areas A_s (slave_tributary_areas on the part)
-  std::vector<double> lengths;  ///< their tributary reference meridian lengths (for the current-area pressure)
+  int rigid = -1;               ///< index into Model::rigid_surfaces; −1: a deformable master (`master`)
+  int part = -1;                ///< the slave part, if the slave is a part or a node set of one
+  std::vector<int> nodes;       ///< slave nodes (global numbers; rigid: meridian order, deformable: chain order)
+  std::vector<double> areas;    ///< their tributary reference areas A_s (slave_tributary_areas on `area_chain`)
+  /// The chain whose tributary areas the slave nodes carry: rigid pairs, the slave part's meridian;
+  /// deformable pairs, the slave chain itself (the part's meridian or the node set in its order).
+  std::vector<int> area_chain;
+  std::vector<int> area_index;  ///< per slave node, its index in `area_chain`
+  /// Deformable master: its chain of nodes (≥ 2, no repeats), in the order that sets the normal
+  /// n = (t_z, −t_r) (contact/contact_search.hpp), i.e. after `master_orientation: reversed`.
+  std::vector<int> master;
+  std::string master_name;      ///< the part or node set named by `master`
   ContactLaw law;
   SourceLocation where;
+  bool deformable() const { return rigid < 0; }
 };
 
 /// Volume control of a step: the pressure of `load` becomes an unknown and the

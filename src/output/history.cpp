@@ -102,7 +102,9 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
     } else if (r.contact >= 0) {
       std::vector<double> vals;
       for (const auto& c : a.system().contact_states(a.displacement(), r.contact))
-        vals.push_back(r.quantity == "contact_force" ? c.force : c.pressure);
+        vals.push_back(r.quantity == "contact_force"         ? c.force
+                       : r.quantity == "contact_penetration" ? std::max(-c.point.gap, 0.0)
+                                                             : c.pressure);
       v = reduce(vals, r.reduce);
     } else if (r.part >= 0 && m.parts[r.part].is_solid()) {
       if (solid_points[r.part].empty()) solid_points[r.part] = a.system().solid_points(a.displacement(), r.part);

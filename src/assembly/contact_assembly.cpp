@@ -1,0 +1,177 @@
+#include "assembly/contact_assembly.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "contact/contact_search.hpp"
+#include "contact/rigid_surface.hpp"
+
+namespace tunica {
+
+namespace {
+
+/// Slave node at x_s against rigid surface `r`: state, f (2) and, if K is given, K (2×2).
+ContactPoint rigid_contact(const RigidSurface& r, const Eigen::Vector2d& xs, double area, const ContactLaw& law,
+                           Eigen::Vector2d& f, Eigen::Matrix2d* K) {
+  return r.type == RigidSurface::Type::cylinder ? rigid_cylinder_contact(r.cylinder, xs, area, law, f, K)
+                                                : rigid_polyline_contact(r.polyline, xs, area, law, f, K);
+}
+
+/// Index of entry (i, j) in the values of a compressed-column matrix; −1 if i or j is prescribed.
+/// Throws std::logic_error if the entry is not in the pattern.
+int entry(const SparseMatrix& K, int i, int j) {
+  if (i < 0 || j < 0) return -1;
+  const int* inner = K.innerIndexPtr();
+  const int* begin = inner + K.outerIndexPtr()[j];
+  const int* end = inner + K.outerIndexPtr()[j + 1];
+  const int* it = std::lower_bound(begin, end, i);
+  if (it == end || *it != i) throw std::logic_error("contact: an entry of a contact element is missing from the pattern");
+  return static_cast<int>(it - inner);
+}
+
+}  // namespace
+
+void ContactAssembly::add_couplings(const Model& m, std::vector<std::vector<int>>& adjacent) {
+  for (const auto& pair : m.contacts) {
+    if (!pair.deformable()) continue;  // a rigid pair couples a slave node with itself only
+    for (int s : pair.nodes)
+      for (int q : pair.master) {
+        adjacent[s].push_back(q);
+        adjacent[q].push_back(s);
+      }
+    for (std::size_t k = 0; k + 1 < pair.master.size(); ++k) {
+      adjacent[pair.master[k]].push_back(pair.master[k + 1]);
+      adjacent[pair.master[k + 1]].push_back(pair.master[k]);
+    }
+  }
+}
+
+ContactAssembly::ContactAssembly(const Model& m, const std::vector<int>& eq, const SparseMatrix& pattern)
+    : model_(m), eq_(eq) {
+  // The latest enter_step among the parts holding each node, then per pair over its nodes.
+  std::vector<int> node_enter(m.num_nodes(), 0);
+  for (const auto& part : m.parts)
+    for (const auto& block : part.blocks)
+      for (int node : block.nodes) node_enter[node] = std::max(node_enter[node], part.enter_step);
+  for (const auto& pair : m.contacts) {
+    int e = pair.part >= 0 ? m.parts[pair.part].enter_step : 0;
+    for (int node : pair.nodes) e = std::max(e, node_enter[node]);
+    for (int node : pair.master) e = std::max(e, node_enter[node]);
+    pair_enter_.push_back(e);
+  }
+  for (const auto& pair : m.contacts) {
+    std::vector<std::array<int, 4>> pos;
+    if (!pair.deformable())
+      for (int node : pair.nodes) {
+        std::array<int, 4> q{};
+        for (int a = 0; a < 2; ++a)
+          for (int b = 0; b < 2; ++b) q[2 * a + b] = entry(pattern, eq_[2 * node + a], eq_[2 * node + b]);
+        pos.push_back(q);
+      }
+    rigid_pos_.push_back(std::move(pos));
+  }
+}
+
+Eigen::Matrix2Xd ContactAssembly::current_chain(const std::vector<int>& nodes, const Eigen::VectorXd& u) const {
+  Eigen::Matrix2Xd chain(2, static_cast<Eigen::Index>(nodes.size()));
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    chain.col(static_cast<Eigen::Index>(i)) = model_.X[nodes[i]].head<2>() + u.segment<2>(2 * nodes[i]);
+  return chain;
+}
+
+void ContactAssembly::assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, SparseMatrix* K,
+                               double& scale2, int& active) const {
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const int ci = static_cast<int>(c);
+    if (!pair_active(ci, step)) continue;
+    if (model_.contacts[c].deformable()) assemble_deformable(ci, u, R, K, scale2, active);
+    else assemble_rigid(ci, u, R, K, scale2, active);
+  }
+}
+
+void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
+                                     double& scale2, int& active) const {
+  const ContactPair& pair = model_.contacts[c];
+  const RigidSurface& rigid = model_.rigid_surfaces[pair.rigid];
+  for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
+    const int n = pair.nodes[k];
+    const Eigen::Vector2d xs = model_.X[n].head<2>() + u.segment<2>(2 * n);
+    Eigen::Vector2d f;
+    Eigen::Matrix2d Kc;
+    const ContactPoint cp = rigid_contact(rigid, xs, pair.areas[k], pair.law, f, K ? &Kc : nullptr);
+    if (!cp.active) continue;
+    ++active;
+    R.segment<2>(2 * n) += f;
+    scale2 += f.squaredNorm();
+    // The gap is a difference of coordinates: its round-off is ~ε_mach |x_s|, times the penalty stiffness.
+    if (K) scale2 += Kc.squaredNorm() * xs.squaredNorm();
+    if (K) {
+      double* values = K->valuePtr();
+      for (int q = 0; q < 4; ++q)
+        if (const int pos = rigid_pos_[c][k][q]; pos >= 0) values[pos] += Kc(q / 2, q % 2);
+    }
+  }
+}
+
+void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
+                                          double& scale2, int& active) const {
+  const ContactPair& pair = model_.contacts[c];
+  const Eigen::Matrix2Xd chain = current_chain(pair.master, u);
+  for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
+    const int s = pair.nodes[k];
+    const Eigen::Vector2d xs = model_.X[s].head<2>() + u.segment<2>(2 * s);
+    const ChainProjection where = project_on_chain(xs, chain, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
+    if (!where.active(pair.law.offset)) continue;
+    ContactVector6 f;
+    ContactMatrix6 Kc;
+    const ContactPoint cp = chain_contact(xs, chain, where, pair.areas[k], pair.law, f, K ? &Kc : nullptr);
+    if (!cp.active) continue;
+    ++active;
+    // The contact element (slave, P_k, P_{k+1}), DOFs (r, z) per node.
+    const int seg = where.segment;
+    const std::array<int, 3> nodes = {s, pair.master[seg], pair.master[seg + 1]};
+    for (int a = 0; a < 6; ++a) R(2 * nodes[a / 2] + a % 2) += f(a);
+    scale2 += f.squaredNorm();
+    if (!K) continue;
+    // The gap is a difference of the three nodes' coordinates: round-off ~ε_mach max |x|.
+    const double x2 = std::max({xs.squaredNorm(), chain.col(seg).squaredNorm(), chain.col(seg + 1).squaredNorm()});
+    scale2 += Kc.squaredNorm() * x2;
+    double* values = K->valuePtr();
+    for (int b = 0; b < 6; ++b) {
+      const int j = eq_[2 * nodes[b / 2] + b % 2];
+      if (j < 0) continue;
+      for (int a = 0; a < 6; ++a)
+        if (const int pos = entry(*K, eq_[2 * nodes[a / 2] + a % 2], j); pos >= 0) values[pos] += Kc(a, b);
+    }
+  }
+}
+
+std::vector<ContactNodeState> ContactAssembly::states(const Eigen::VectorXd& u, int c) const {
+  const ContactPair& pair = model_.contacts[c];
+  // Current tributary areas on the current chain that gave the reference ones.
+  const Eigen::VectorXd current = slave_tributary_areas(current_chain(pair.area_chain, u));
+  Eigen::Matrix2Xd master;
+  if (pair.deformable()) master = current_chain(pair.master, u);
+  std::vector<ContactNodeState> out;
+  for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
+    ContactNodeState s;
+    s.node = pair.nodes[k];
+    const Eigen::Vector2d xs = model_.X[s.node].head<2>() + u.segment<2>(2 * s.node);
+    if (pair.deformable()) {
+      const ChainProjection where = project_on_chain(xs, master, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
+      ContactVector6 f;
+      s.point = chain_contact(xs, master, where, pair.areas[k], pair.law, f, nullptr);
+      if (s.point.active) s.master_segment = where.segment;
+    } else {
+      Eigen::Vector2d f;
+      s.point = rigid_contact(model_.rigid_surfaces[pair.rigid], xs, pair.areas[k], pair.law, f, nullptr);
+    }
+    s.force = s.point.pressure * pair.areas[k];
+    const double a = current(pair.area_index[k]);
+    s.pressure = a > 0 ? s.force / a : s.point.pressure;
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace tunica

@@ -1,0 +1,86 @@
+#pragma once
+// Contact contributions to the residual and tangent of a System (axisymmetric
+// models; theory manual §9): each contact pair, node by node, serially in pair
+// and slave-node order after the elements, so the sums are deterministic.
+//
+// Rigid pair: the slave node's force f (2) and 2×2 tangent (rigid_surface.hpp),
+// on the slave's DOFs only — entries the element pattern already holds.
+//
+// Deformable pair: the nearest feature of the current master chain
+// (project_on_chain, contact_search.hpp) makes a 3-node contact element
+// (slave, P_k, P_{k+1}); chain_contact (axisym_contact.hpp: node to segment,
+// f = ε A_s g_N N, K = ε A_s [N⊗N − (g_N/ℓ)(T⊗D + D⊗T) − (g_N g/ℓ²) D⊗D]; node
+// to vertex in a corner region) gives f (6) and K (6×6), scattered over the
+// three nodes' free DOFs (prescribed DOFs: R gets every row, as the reactions;
+// K only free rows and columns, as for the elements).
+//
+// Sparsity: the pattern is fixed at set-up but the segment a slave node touches
+// changes as it slides, so the pattern couples every slave node with every
+// master node of the pair (S×M 2×2 blocks, both ways) and consecutive master
+// nodes. Cost: 8 S·M extra nonzeros (e.g. 100 balloon nodes against 500
+// plaque nodes: 4·10⁵ entries, 3 MB, and the fill of a dense S×M coupling in
+// the factorization) — meant for axisymmetric models of ≤ 10³ contact nodes.
+#include <Eigen/Dense>
+#include <array>
+#include <vector>
+
+#include "assembly/sparse_matrix.hpp"
+#include "contact/axisym_contact.hpp"
+#include "model/model.hpp"
+
+namespace tunica {
+
+/// The contact state of one slave node of a contact pair (Model::contacts).
+struct ContactNodeState {
+  int node = -1;
+  ContactPoint point;    ///< gap, ε⟨−g_N⟩ (per reference area), normal, ...
+  double force = 0;      ///< normal force ε⟨−g_N⟩ A_s on the node (whole circumference)
+  double pressure = 0;   ///< contact pressure on the current tributary area: force / a_s
+  int master_segment = -1;  ///< deformable pairs: the segment k of the contact element (slave, P_k, P_{k+1}), else −1
+};
+
+/// A slave node beyond an end of a deformable master chain by at most this fraction of the end
+/// segment still projects onto it (contact_search.hpp: bodies ending in one plane z = const).
+constexpr double kMasterEndTolerance = 1e-9;
+
+class ContactAssembly {
+public:
+  /// Adds the node couplings of the deformable pairs' contact elements to `adjacent` (per node,
+  /// its coupled nodes, unsorted): every slave with every master node, consecutive master nodes.
+  static void add_couplings(const Model& m, std::vector<std::vector<int>>& adjacent);
+
+  /// Scatter positions of the rigid pairs' slave blocks in `pattern` (equation numbers `eq`, −1:
+  /// prescribed). Throws std::logic_error if the pattern lacks an entry.
+  ContactAssembly(const Model& m, const std::vector<int>& eq, const SparseMatrix& pattern);
+
+  /// R += f and, if K is given (the pattern's structure), K += ∂f/∂u for every active slave node;
+  /// scale2 += ‖f‖² + (‖K_c‖ |x|)² (round-off yardstick: the gap is a difference of coordinates);
+  /// active += the number of active slave nodes.
+  /// Pairs touching a part that has not entered by `step` (0-based, Model::part_active) are skipped.
+  void assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
+                int& active) const;
+  /// Whether pair `c` takes part in step `step`: every part holding one of its slave or master
+  /// nodes has entered.
+  bool pair_active(int c, int step) const { return step >= pair_enter_[c]; }
+
+  /// Contact state of every slave node of pair `c` at u, in the pair's node order.
+  std::vector<ContactNodeState> states(const Eigen::VectorXd& u, int c) const;
+
+private:
+  void assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
+                      int& active) const;
+  void assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
+                           int& active) const;
+  /// Current positions of a chain of nodes (columns (r, z)).
+  Eigen::Matrix2Xd current_chain(const std::vector<int>& nodes, const Eigen::VectorXd& u) const;
+
+  const Model& model_;
+  std::vector<int> eq_;
+  /// Per rigid pair (empty for deformable ones), per slave node: positions of its 2×2 block
+  /// (rr, rz, zr, zz) in K's values (−1: not free-free).
+  std::vector<std::vector<std::array<int, 4>>> rigid_pos_;
+  /// Per pair: the step from which it is active (the latest enter_step of the parts it touches).
+  std::vector<int> pair_enter_;
+};
+
+}  // namespace tunica

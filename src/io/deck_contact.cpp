@@ -1,0 +1,245 @@
+#include "io/deck_contact.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "contact/axisym_contact.hpp"
+
+namespace tunica {
+
+const ComponentSpec& cylinder_spec() {
+  static const ComponentSpec s{
+      "rigid_surfaces", "cylinder",
+      "Axisymmetric models: a rigid cylinder r = R_c about the z axis, unbounded in z, fixed. The slave "
+      "nodes of a `contact` pair are kept outside it (r ≥ R_c, e.g. a balloon on a catheter) or inside it "
+      "(r ≤ R_c, e.g. a rigid tube around an artery).",
+      {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
+       required(positive(number("radius", Dimension::length, "radius R_c"))),
+       required(one_of(text("side", "the side where the slave nodes belong"), {"outside", "inside"}))}};
+  return s;
+}
+
+const ComponentSpec& polyline_spec() {
+  static const ComponentSpec s{
+      "rigid_surfaces", "polyline",
+      "Axisymmetric models: a rigid open polyline in the (r, z) meridian plane (a surface of revolution), "
+      "fixed. Its contact normal is the direction of travel turned clockwise: order the points so that "
+      "the slave nodes lie on the right of the direction of travel (e.g. from larger to smaller r for a "
+      "plane z = const with the slave above it). Beyond the ends of the chain there is no contact.",
+      {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
+       required(structured("points", "list", "at least 2 points `[r, z]` (lengths), e.g. `[[2 mm, 0], [0.5 mm, 0]]`"))}};
+  return s;
+}
+
+const ComponentSpec& contact_spec() {
+  static const ComponentSpec s{
+      "contact", "",
+      "Axisymmetric models: frictionless penalty contact of the nodes of a slave (an axisymmetric membrane "
+      "part or a node set) with a rigid surface (`rigid`) or a deformable master (`master`: a membrane part, "
+      "its meridian in node order, or an ordered node set, a chain of nodes in the listed order; exactly one "
+      "of `rigid` and `master`). Each slave node s stands for its tributary reference area A_s = 2π R_s "
+      "(L_left + L_right)/2 (rigid pairs: on the slave part's meridian; deformable pairs: on the slave chain "
+      "itself, the part's meridian or the node set in its order) and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = "
+      "(signed distance to the surface) − offset; it is active when g_N < 0. A deformable master's normal is "
+      "its direction of travel turned clockwise (a chain running towards +z faces +r): the slave must be on "
+      "that side, or give `master_orientation: reversed`. Slave nodes push on the master segment they "
+      "project onto (node to segment, one pass: master nodes may enter the slave). The contact pressure "
+      "ε⟨−g_N⟩ is per reference area; the outputs `contact_pressure` divide the normal force ε⟨−g_N⟩ A_s by "
+      "the current tributary area.",
+      {required(text("slave", "name of an axisymmetric membrane part, or of a node set")),
+       text("rigid", "name of a surface in `rigid_surfaces` (or give `master`)"),
+       text("master", "name of an axisymmetric membrane part or of a node set: the deformable master chain "
+                      "(or give `rigid`)"),
+       with_default(one_of(text("master_orientation",
+                                "`as_given`: the chain's order sets the normal (direction turned clockwise); "
+                                "`reversed`: the opposite side"),
+                           {"as_given", "reversed"}),
+                    "as_given"),
+       required(positive(number("penalty", Dimension::penalty,
+                                "penalty ε: contact pressure per unit penetration (the penetration is p_c/ε)"))),
+       with_default(at_least(number("offset", Dimension::length,
+                                    "c: contact starts at the distance c from the surface (e.g. half a thickness; "
+                                    "two membranes: the sum of their half thicknesses)"),
+                             0.0),
+                    "0")}};
+  return s;
+}
+
+void read_rigid_surfaces(const DeckNode& deck, Model& m) {
+  if (!deck.has("rigid_surfaces")) return;
+  const DeckNode sec = deck["rigid_surfaces"];
+  if (m.geometry != Geometry::axisymmetric)
+    sec.fail("rigid surfaces and contact need an axisymmetric model (parts with element: axisymmetric_membrane)");
+  if (!sec.is_map()) sec.fail("expected a map of rigid surfaces (name: {type: cylinder|polyline, ...})");
+  for (const auto& [name, node] : sec.entries()) {
+    if (!node.is_map()) node.fail("expected a map with `type: cylinder` or `type: polyline`");
+    const std::string type = node.required("type").as_string();
+    RigidSurface r;
+    r.name = name;
+    r.where = node.where();
+    if (type == "cylinder") {
+      const Params p = read_params(node, cylinder_spec(), m.units);
+      r.type = RigidSurface::Type::cylinder;
+      r.cylinder.radius = p.number("radius");
+      r.cylinder.side = p.text("side") == "inside" ? CylinderSide::inside : CylinderSide::outside;
+    } else if (type == "polyline") {
+      read_params(node, polyline_spec(), m.units);
+      r.type = RigidSurface::Type::polyline;
+      const DeckNode pts = node["points"];
+      if (!pts.is_sequence()) pts.fail("expected a list of points [r, z]");
+      const auto items = pts.items();
+      if (items.size() < 2) pts.fail(fmt::format("a polyline needs at least 2 points, got {}", items.size()));
+      r.polyline.points.resize(2, static_cast<Eigen::Index>(items.size()));
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        if (!items[i].is_sequence() || items[i].items().size() != 2) items[i].fail("expected a point [r, z]");
+        for (int c = 0; c < 2; ++c)
+          r.polyline.points(c, static_cast<Eigen::Index>(i)) = read_quantity(items[i].items()[c], Dimension::length, m.units);
+        if (i > 0 && (r.polyline.points.col(i) - r.polyline.points.col(i - 1)).norm() == 0)
+          items[i].fail("a polyline point repeats the previous one (a segment of zero length)");
+      }
+    } else {
+      node["type"].fail("unknown rigid surface type '" + type + "' (known: cylinder, polyline)");
+    }
+    m.rigid_surfaces.push_back(std::move(r));
+  }
+}
+
+namespace {
+
+/// Reference positions (R, Z) of a chain of nodes.
+Eigen::Matrix2Xd reference_chain(const Model& m, const std::vector<int>& nodes) {
+  Eigen::Matrix2Xd chain(2, static_cast<Eigen::Index>(nodes.size()));
+  for (std::size_t i = 0; i < nodes.size(); ++i) chain.col(static_cast<Eigen::Index>(i)) = m.X[nodes[i]].head<2>();
+  return chain;
+}
+
+/// The slave of a rigid pair: a part (all its nodes) or a node set within one part, in meridian
+/// order, with the tributary areas of the part's meridian.
+void read_rigid_slave(const Params& p, ContactPair& c, const Model& m) {
+  const std::string& slave = p.text("slave");
+  std::vector<int> wanted;
+  c.part = m.find_part(slave);
+  if (c.part < 0) {
+    const int s = m.find_node_set(slave);
+    if (s < 0) p.fail("slave", "undefined part or node set '" + slave + "'");
+    wanted = m.node_sets[s].nodes;
+    if (wanted.empty()) p.fail("slave", "node set '" + slave + "' is empty");
+    for (std::size_t k = 0; k < m.parts.size() && c.part < 0; ++k)
+      if (std::find(m.parts[k].nodes.begin(), m.parts[k].nodes.end(), wanted.front()) != m.parts[k].nodes.end())
+        c.part = static_cast<int>(k);
+  }
+  if (m.parts[c.part].is_solid())
+    p.fail("slave", "the slave of a rigid contact pair must be (on) an axisymmetric membrane part; '" + slave +
+                        "' is (on) a solid part");
+  const Part& part = m.parts[c.part];
+  if (wanted.empty()) wanted = part.nodes;
+  const Eigen::VectorXd areas = slave_tributary_areas(reference_chain(m, part.nodes));
+  for (int n : wanted)
+    if (std::find(part.nodes.begin(), part.nodes.end(), n) == part.nodes.end())
+      p.fail("slave", "the nodes of node set '" + slave + "' are not all on one part");
+  c.area_chain = part.nodes;
+  for (std::size_t i = 0; i < part.nodes.size(); ++i)  // meridian order, no duplicates
+    if (std::find(wanted.begin(), wanted.end(), part.nodes[i]) != wanted.end()) {
+      c.nodes.push_back(part.nodes[i]);
+      c.areas.push_back(areas(static_cast<Eigen::Index>(i)));
+      c.area_index.push_back(static_cast<int>(i));
+    }
+}
+
+/// A chain of nodes named by `key` (`slave` or `master` of a deformable pair): a membrane part's
+/// meridian or a node set in its order; ≥ 2 nodes, no node twice, no segment of zero length.
+std::vector<int> read_chain(const Params& p, const std::string& key, const Model& m, int* part_index) {
+  const std::string& name = p.text(key);
+  std::vector<int> chain;
+  const int part = m.find_part(name);
+  if (part_index) *part_index = part;
+  if (part >= 0) {
+    if (m.parts[part].element != "axisymmetric_membrane")
+      p.fail(key, "part '" + name + "' is not an axisymmetric membrane (its nodes are no chain): name an ordered node set "
+                  "along its boundary");
+    chain = m.parts[part].nodes;
+  } else {
+    const int s = m.find_node_set(name);
+    if (s < 0) p.fail(key, "undefined part or node set '" + name + "'");
+    chain = m.node_sets[s].nodes;
+  }
+  if (chain.size() < 2)
+    p.fail(key, fmt::format("the {} chain '{}' has {} node{}; it needs at least 2 (a chain of segments)", key, name,
+                            chain.size(), chain.size() == 1 ? "" : "s"));
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+    if ((m.X[chain[i + 1]] - m.X[chain[i]]).norm() == 0)
+      p.fail(key, fmt::format("segment {} of the {} chain '{}' has zero length (its nodes {} and {} coincide)", i, key,
+                              name, i, i + 1));
+  std::vector<std::pair<int, int>> sorted;  // (node, position): O(n log n) for long chains
+  for (std::size_t i = 0; i < chain.size(); ++i) sorted.emplace_back(chain[i], static_cast<int>(i));
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 0; i + 1 < sorted.size(); ++i)
+    if (sorted[i].first == sorted[i + 1].first)
+      p.fail(key, fmt::format("the {} chain '{}' lists a node twice (at positions {} and {})", key, name,
+                              sorted[i].second, sorted[i + 1].second));
+  return chain;
+}
+
+/// The slave and master of a deformable pair.
+void read_deformable_pair(const Params& p, ContactPair& c, const Model& m) {
+  c.nodes = read_chain(p, "slave", m, &c.part);
+  c.master = read_chain(p, "master", m, nullptr);
+  c.master_name = p.text("master");
+  if (p.text("slave") == c.master_name)
+    p.fail("master", "the master is the slave '" + c.master_name + "' (self-contact is not supported)");
+  std::vector<int> slaves = c.nodes;
+  std::sort(slaves.begin(), slaves.end());
+  for (std::size_t i = 0; i < c.master.size(); ++i)
+    if (std::binary_search(slaves.begin(), slaves.end(), c.master[i]))
+      p.fail("master", fmt::format("the master '{}' and the slave '{}' share a node (master node {}); self-contact is "
+                                   "not supported",
+                                   c.master_name, p.text("slave"), i));
+  if (p.text("master_orientation") == "reversed") std::reverse(c.master.begin(), c.master.end());
+  // Tributary areas on the slave chain itself, in its order.
+  c.area_chain = c.nodes;
+  const Eigen::VectorXd areas = slave_tributary_areas(reference_chain(m, c.nodes));
+  for (std::size_t i = 0; i < c.nodes.size(); ++i) {
+    c.areas.push_back(areas(static_cast<Eigen::Index>(i)));
+    c.area_index.push_back(static_cast<int>(i));
+  }
+}
+
+}  // namespace
+
+void read_contacts(const DeckNode& deck, Model& m) {
+  if (!deck.has("contact")) return;
+  const DeckNode sec = deck["contact"];
+  if (m.geometry != Geometry::axisymmetric)
+    sec.fail("rigid surfaces and contact need an axisymmetric model (parts with element: axisymmetric_membrane)");
+  if (!sec.is_map())
+    sec.fail("expected a map of contact pairs (name: {slave: ..., rigid: ... or master: ..., penalty: ...})");
+  for (const auto& [name, node] : sec.entries()) {
+    const Params p = read_params(node, contact_spec(), m.units);
+    ContactPair c;
+    c.name = name;
+    c.where = node.where();
+    c.law.penalty = p.number("penalty");
+    c.law.offset = p.number("offset");
+    const bool rigid = node.has("rigid"), master = node.has("master");
+    if (rigid && master)
+      p.fail("master", "a contact pair has either `rigid: <surface>` or `master: <part or node set>`, not both");
+    if (!rigid && !master)
+      node.fail("a contact pair needs `rigid: <surface>` (a rigid tool) or `master: <part or node set>` (a deformable "
+                "master)");
+    if (rigid) {
+      if (node.has("master_orientation"))
+        p.fail("master_orientation", "only a deformable `master` has an orientation (a rigid polyline's is its point order)");
+      const std::string& r = p.text("rigid");
+      auto it = std::find_if(m.rigid_surfaces.begin(), m.rigid_surfaces.end(), [&](auto& x) { return x.name == r; });
+      if (it == m.rigid_surfaces.end()) p.fail("rigid", "undefined rigid surface '" + r + "'");
+      c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
+      read_rigid_slave(p, c, m);
+    } else {
+      read_deformable_pair(p, c, m);
+    }
+    m.contacts.push_back(std::move(c));
+  }
+}
+
+}  // namespace tunica

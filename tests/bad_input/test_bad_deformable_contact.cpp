@@ -1,0 +1,149 @@
+// Bad input in contact pairs with a deformable master (`master`): each error names
+// the file, the line and the key, exits with 2 and prints one line. The base deck:
+// a tube inflated inside another (deformable pair) and the outer tube in a rigid sleeve.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBase = R"(title: two tubes
+units: {length: mm, force: N}
+materials:
+  soft: {type: neo_hookean, mu: 0.1 MPa}
+parts:
+  balloon:
+    element: axisymmetric_membrane
+    material: soft
+    thickness: 0.1 mm
+    mesh: {type: line, from: [1, 0], to: [1, 1], elements: 4}
+  artery:
+    element: axisymmetric_membrane
+    material: soft
+    thickness: 0.1 mm
+    mesh: {type: line, from: [1.2, 0], to: [1.2, 1], elements: 4}
+node_sets:
+  rim: {part: artery, nodes: [0, 1, 2]}
+boundary:
+  b0: {node_set: balloon.all, dofs: [z]}
+  a0: {node_set: artery.all, dofs: [z]}
+loads:
+  lumen: {type: pressure, part: balloon}
+rigid_surfaces:
+  sleeve: {type: cylinder, radius: 2 mm, side: inside}
+contact:
+  press: {slave: balloon, master: artery, master_orientation: reversed, penalty: 1e3, offset: 0.1 mm}
+  cage: {slave: artery, rigid: sleeve, penalty: 1e3}
+steps:
+  - {name: inflate, increments: 1, set: {lumen: 0.001}}
+)";
+
+std::string write_deck(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "tunica-bad-deformable-contact";
+  fs::create_directories(dir);
+  const fs::path path = dir / (name + ".yaml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+int line_of(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+/// Expects `text` to fail with one line naming the line of `line_text`, the key and `what`.
+void expect_error_in(const std::string& name, const std::string& text, const std::string& line_text,
+                     const std::string& key, const std::string& what) {
+  const std::string path = write_deck(name, text);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  const int line = line_of(text, line_text);
+  EXPECT_NE(o.output.find(path + ":" + std::to_string(line) + ":"), std::string::npos)
+      << "expected line " << line << " in: " << o.output;
+  EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
+}
+
+/// Replaces `from` by `to` in the base deck; the error is on the line of `to`.
+void expect_error(const std::string& name, const std::string& from, const std::string& to, const std::string& key,
+                  const std::string& what) {
+  expect_error_in(name, replace(kBase, from, to), to, key, what);
+}
+
+/// The master is the node set `rim` with the node indices `nodes`.
+std::string with_rim(const std::string& nodes) {
+  return replace(replace(kBase, "rim: {part: artery, nodes: [0, 1, 2]}", "rim: {part: artery, nodes: " + nodes + "}"),
+                 "master: artery,", "master: rim,");
+}
+
+}  // namespace
+
+TEST(BadDeformableContact, TheBaseDeckIsValid) {
+  const Outcome o = run_cli("check " + write_deck("valid", kBase));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}
+
+TEST(BadDeformableContact, BothRigidAndMaster) {
+  expect_error("both", "master: artery,", "rigid: sleeve, master: artery,", "contact.press.master",
+               "either `rigid: <surface>` or `master: <part or node set>`, not both");
+}
+
+TEST(BadDeformableContact, NeitherRigidNorMaster) {
+  expect_error("neither", "press: {slave: balloon, master: artery, master_orientation: reversed,",
+               "press: {slave: balloon,", "contact.press", "needs `rigid: <surface>`");
+}
+
+TEST(BadDeformableContact, UnknownMaster) {
+  expect_error("unknown-master", "master: artery,", "master: arterie,", "contact.press.master",
+               "undefined part or node set 'arterie'");
+}
+
+TEST(BadDeformableContact, MasterChainOfOneNode) {
+  expect_error("one-node", "master: artery,", "master: artery.start,", "contact.press.master",
+               "the master chain 'artery.start' has 1 node; it needs at least 2");
+}
+
+TEST(BadDeformableContact, SlaveChainOfOneNode) {
+  expect_error("one-slave-node", "slave: balloon, master", "slave: balloon.end, master", "contact.press.slave",
+               "the slave chain 'balloon.end' has 1 node; it needs at least 2");
+}
+
+TEST(BadDeformableContact, MasterIsTheSlave) {
+  expect_error("self", "master: artery,", "master: balloon,", "contact.press.master",
+               "the master is the slave 'balloon' (self-contact is not supported)");
+}
+
+TEST(BadDeformableContact, MasterSharesNodesWithTheSlave) {
+  expect_error("shared", "slave: balloon, master: artery,", "slave: artery, master: rim,", "contact.press.master",
+               "the master 'rim' and the slave 'artery' share a node (master node 0)");
+}
+
+TEST(BadDeformableContact, ZeroLengthMasterSegment) {
+  expect_error_in("zero-length", with_rim("[0, 1, 1, 2]"), "master: rim,", "contact.press.master",
+                  "segment 1 of the master chain 'rim' has zero length (its nodes 1 and 2 coincide)");
+}
+
+TEST(BadDeformableContact, MasterNodeListedTwice) {
+  expect_error_in("twice", with_rim("[0, 1, 0]"), "master: rim,", "contact.press.master",
+                  "the master chain 'rim' lists a node twice (at positions 0 and 2)");
+}
+
+TEST(BadDeformableContact, OrientationOfARigidSurface) {
+  expect_error("rigid-orientation", "rigid: sleeve,", "rigid: sleeve, master_orientation: reversed,",
+               "contact.cage.master_orientation", "only a deformable `master` has an orientation");
+}
+
+TEST(BadDeformableContact, UnknownOrientation) {
+  expect_error("bad-orientation", "master_orientation: reversed,", "master_orientation: backwards,",
+               "contact.press.master_orientation", "backwards");
+}
