@@ -39,10 +39,6 @@ struct ContactNodeState {
   int master_segment = -1;  ///< deformable pairs: the segment k of the contact element (slave, P_k, P_{k+1}), else −1
 };
 
-/// A slave node beyond an end of a deformable master chain by at most this fraction of the end
-/// segment still projects onto it (contact_search.hpp: bodies ending in one plane z = const).
-constexpr double kMasterEndTolerance = 1e-9;
-
 class ContactAssembly {
 public:
   /// Adds the node couplings of the deformable pairs' contact elements to `adjacent` (per node,

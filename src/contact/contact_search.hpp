@@ -56,6 +56,10 @@
 
 namespace tunica {
 
+/// The end tolerance τ for deformable master chains: a slave node beyond an end by at most this
+/// fraction of the end segment still projects onto it (bodies ending in one plane z = const).
+constexpr double kMasterEndTolerance = 1e-9;
+
 /// Which feature of a master chain is nearest to a point.
 enum class ChainFeature {
   none,     ///< nothing within the search radius, or beyond an end of the chain

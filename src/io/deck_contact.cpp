@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "contact/axisym_contact.hpp"
+#include "contact/contact_search.hpp"
 
 namespace tunica {
 
@@ -43,7 +45,7 @@ const ComponentSpec& contact_spec() {
       "itself, the part's meridian or the node set in its order) and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = "
       "(signed distance to the surface) − offset; it is active when g_N < 0. A deformable master's normal is "
       "its direction of travel turned clockwise (a chain running towards +z faces +r): the slave must be on "
-      "that side, or give `master_orientation: reversed`. Slave nodes push on the master segment they "
+      "that side, or give `master_orientation: reversed` (a slave node behind the master at the reference state is an error). Slave nodes push on the master segment they "
       "project onto (node to segment, one pass: master nodes may enter the slave). The contact pressure "
       "ε⟨−g_N⟩ is per reference area; the outputs `contact_pressure` divide the normal force ε⟨−g_N⟩ A_s by "
       "the current tributary area.",
@@ -182,7 +184,7 @@ std::vector<int> read_chain(const Params& p, const std::string& key, const Model
 }
 
 /// The slave and master of a deformable pair.
-void read_deformable_pair(const Params& p, ContactPair& c, const Model& m) {
+void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c, const Model& m) {
   c.nodes = read_chain(p, "slave", m, &c.part);
   c.master = read_chain(p, "master", m, nullptr);
   c.master_name = p.text("master");
@@ -196,6 +198,20 @@ void read_deformable_pair(const Params& p, ContactPair& c, const Model& m) {
                                    "not supported",
                                    c.master_name, p.text("slave"), i));
   if (p.text("master_orientation") == "reversed") std::reverse(c.master.begin(), c.master.end());
+  // The side: at the reference state no slave node may lie behind the master (signed distance
+  // s < 0 to the nearest feature): it would count as penetrated by s − c from the first iteration
+  // and be pushed through the master. Almost always the orientation is the wrong way round.
+  const Eigen::Matrix2Xd master = reference_chain(m, c.master);
+  for (std::size_t k = 0; k < c.nodes.size(); ++k) {
+    const ChainProjection w = project_on_chain(m.X[c.nodes[k]].head<2>(), master,
+                                               std::numeric_limits<double>::infinity(), kMasterEndTolerance);
+    if (w.feature != ChainFeature::none && w.signed_distance < 0)
+      p.fail(node.has("master_orientation") ? "master_orientation" : "master",
+             fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} at the reference "
+                         "state; the normal is the master's direction turned clockwise): reverse "
+                         "`master_orientation`, or name only the slave nodes that face the master",
+                         k, p.text("slave"), c.master_name, w.signed_distance));
+  }
   // Tributary areas on the slave chain itself, in its order.
   c.area_chain = c.nodes;
   const Eigen::VectorXd areas = slave_tributary_areas(reference_chain(m, c.nodes));
@@ -236,7 +252,7 @@ void read_contacts(const DeckNode& deck, Model& m) {
       c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
       read_rigid_slave(p, c, m);
     } else {
-      read_deformable_pair(p, c, m);
+      read_deformable_pair(node, p, c, m);
     }
     m.contacts.push_back(std::move(c));
   }
