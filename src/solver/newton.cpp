@@ -66,7 +66,7 @@ double step_bound(const System& system) {
 template <class ToFree>
 bool predict(const System& system, LinearSolver& solver, const LoadState& loads, const Eigen::VectorXd& un,
              Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& R, Eigen::VectorXd& Rf, Eigen::VectorXd& du,
-             double& r0, double& e1, const ToFree& to_free,
+             double bound, double& r0, double& e1, const ToFree& to_free,
              const std::function<void(const IterationRecord&)>& on_iteration) {
   const Eigen::VectorXd dp = u - un;  // the prescribed increment (zero on free DOFs)
   if (dp.size() == 0 || dp.cwiseAbs().maxCoeff() == 0) return false;
@@ -90,7 +90,7 @@ bool predict(const System& system, LinearSolver& solver, const LoadState& loads,
   if (!std::isfinite(rec.residual) || rec.residual == 0) return false;
   Eigen::VectorXd step;
   std::string note;
-  if (!solve_perturbed(solver, K, rhs, true, step_bound(system), step, note, rec.factor_seconds, rec.solve_seconds))
+  if (!solve_perturbed(solver, K, rhs, true, bound, step, note, rec.factor_seconds, rec.solve_seconds))
     return false;
   rec.solver = solver.used() + note;
   on_iteration(rec);
@@ -163,7 +163,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
   const double bound = step_bound(system);
   int first = 0;
   if (converged && settings.tangent_predictor && !constraint &&
-      predict(system, solver, loads, *converged, u, K, R, Rf, du, r0, e1, to_free, on_iteration)) {
+      predict(system, solver, loads, *converged, u, K, R, Rf, du, bound, r0, e1, to_free, on_iteration)) {
     previous_residual = r0;
     first = 1;
   }

@@ -9,6 +9,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -47,17 +48,7 @@ steps:
 )";
 
 std::string write_deck(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "tunica-bad-deformable-contact";
-  fs::create_directories(dir);
-  const fs::path path = dir / (name + ".yaml");
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-int line_of(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+  return write_deck_file("tunica-bad-deformable-contact", name, text);
 }
 
 /// Expects `text` to fail with one line naming the line of `line_text`, the key and `what`.

@@ -10,6 +10,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -20,18 +21,7 @@ const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aor
 
 
 std::string write_deck(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "tunica-bad-input";
-  fs::create_directories(dir);
-  const fs::path path = dir / (name + ".yaml");
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-/// 1-based line of the first occurrence of `needle` in `text`.
-int line_of(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+  return write_deck_file("tunica-bad-input", name, text);
 }
 
 /// Replaces `from` by `to` in the example, checks the deck and expects exit 2 and a

@@ -10,6 +10,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -28,18 +29,7 @@ std::string deck_with_material(const std::string& body) {
 }
 
 std::string write_deck(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("tunica-bad-materials-" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  const fs::path path = dir / (name + ".yaml");
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-/// 1-based line of the first occurrence of `needle` in `text`.
-int line_of(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+  return write_deck_file("tunica-bad-materials-" + std::to_string(getpid()), name, text);
 }
 
 /// Checks the deck with material `body`; expects exit 2 and "<file>:<line of line_text>:...key '<key>'...<what>".

@@ -9,6 +9,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
 #include "../support/solid_decks.hpp"
 
 using namespace tunica::test;
@@ -17,17 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string write_deck(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "tunica-bad-solid";
-  fs::create_directories(dir);
-  const fs::path path = dir / (name + ".yaml");
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-int line_of(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+  return write_deck_file("tunica-bad-solid", name, text);
 }
 
 /// Replaces `from` by `to` in the base deck; the error must be on the line holding `at` (default `to`).
