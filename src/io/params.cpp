@@ -130,9 +130,11 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
     }
     const DeckNode given = node[p.name];
     const bool missing = !given.yaml().IsDefined() || given.yaml().IsNull();
+    // A key written without a value is an error, required or not: the sections test for a key's
+    // presence (node.has) and would otherwise find it present but unread.
+    if (given.yaml().IsDefined() && given.yaml().IsNull()) given.fail("key '" + p.name + "' has no value");
     if (missing) {
       if (p.required) {
-        if (given.yaml().IsDefined()) given.fail("key '" + p.name + "' has no value");
         SourceLocation w = node.where();
         w.key = given.path();
         throw InputError(w, "missing required key '" + p.name + "' (" + p.doc + ")");

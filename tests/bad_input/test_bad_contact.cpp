@@ -62,6 +62,11 @@ TEST(BadContact, UnknownRigidSurface) {
                "undefined rigid surface 'sleve'");
 }
 
+TEST(BadContact, RigidKeyWithoutAValue) {  // found by fuzzing: `rigid:` with no value was present but unread
+  expect_error("rigid-without-value", "rigid: sleeve,", "rigid: ,", "contact.wall_sleeve.rigid",
+               "has no value");
+}
+
 TEST(BadContact, UnknownSlave) {
   expect_error("unknown-slave", "slave: wall,", "slave: wal,", "contact.wall_sleeve.slave",
                "undefined part or node set 'wal'");
