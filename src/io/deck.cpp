@@ -98,8 +98,8 @@ const ComponentSpec& solver_spec() {
                                     "convergence when ‖R‖ ≤ tol · ‖R₀‖ (R₀: residual at the start of the increment)")),
                     "1e-9"),
        with_default(positive(number("energy_tolerance", Dimension::dimensionless,
-                                    "and |Δu_k·R_k| ≤ tol · |Δu₁·R₀| (energy norm of the last correction against the residual it left)")),
-                    "1e-15"),
+                                    "and |Δu_k·R_k| ≤ tol · |Δu₁·R₀| (energy norm of the last correction against the residual it left; it scales as the cube of the correction, so 1e-12 leaves an error near 1e-8 of the increment)")),
+                    "1e-12"),
        with_default(at_most(at_least(integer("max_cutbacks", "times an increment may be halved and retried"), 0), 30),
                     "5"),
        with_default(boolean("line_search", "halve a Newton correction that raises ‖R‖ or inverts an element, up to 8 "

@@ -138,7 +138,7 @@ struct VolumeControl {
 struct SolverSettings {
   int max_iterations = 12;
   double residual_tolerance = 1e-9;  ///< on ‖R‖/‖R₀‖
-  double energy_tolerance = 1e-15;   ///< on |Δu·R| relative to the first iteration
+  double energy_tolerance = 1e-12;   ///< on |Δu·R| relative to the first iteration
   int max_cutbacks = 5;
   bool line_search = true;           ///< halve a correction that raises ‖R‖ (up to 8 times)
   std::string linear_solver = "auto";  ///< solver/linear_solver.hpp
