@@ -146,8 +146,13 @@ void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen
   }
 }
 
-std::vector<ContactNodeState> ContactAssembly::states(const Eigen::VectorXd& u, int c) const {
+std::vector<ContactNodeState> ContactAssembly::states(const Eigen::VectorXd& u, int c, int step) const {
   const ContactPair& pair = model_.contacts[c];
+  if (!pair_active(c, step)) {
+    std::vector<ContactNodeState> out(pair.nodes.size());
+    for (std::size_t k = 0; k < pair.nodes.size(); ++k) out[k].node = pair.nodes[k];
+    return out;
+  }
   // Current tributary areas on the current chain that gave the reference ones.
   const Eigen::VectorXd current = slave_tributary_areas(current_chain(pair.area_chain, u));
   Eigen::Matrix2Xd master;

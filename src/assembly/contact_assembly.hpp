@@ -60,7 +60,9 @@ public:
   bool pair_active(int c, int step) const { return step >= pair_enter_[c]; }
 
   /// Contact state of every slave node of pair `c` at u, in the pair's node order.
-  std::vector<ContactNodeState> states(const Eigen::VectorXd& u, int c) const;
+  /// Every slave node of pair c at u in step `step` (0-based); a pair waiting for a part to enter
+  /// reports its nodes inactive, as the assembly treats it.
+  std::vector<ContactNodeState> states(const Eigen::VectorXd& u, int c, int step) const;
 
 private:
   void assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,

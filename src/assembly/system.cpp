@@ -402,8 +402,8 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   if (force_scale) *force_scale = std::sqrt(scale2);
 }
 
-std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, int c) const {
-  return contact_->states(u, c);
+std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, int c, int step) const {
+  return contact_->states(u, c, step);
 }
 
 Eigen::VectorXd System::pressure_load(const Eigen::VectorXd& u, int l) const {

@@ -64,8 +64,9 @@ public:
   /// `active_contacts`, if given, receives the number of active slave nodes (all pairs).
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                 double* force_scale = nullptr, int* active_contacts = nullptr) const;
-  /// Contact state of every slave node of contact pair `c` at u, in the pair's node order.
-  std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c) const;
+  /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
+  /// pair's node order; inactive while the pair waits for one of its parts to enter.
+  std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
   /// External force per unit pressure of load `l` at u (all DOFs): ∂f_ext/∂p.
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& u, int l) const;
   /// Enclosed volume of the surface of load `l` at u (see surface_pressure.hpp; axisymmetric:

@@ -101,7 +101,7 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
       v = r.quantity == "volume" ? a.loads().volume[r.load] : a.loads().pressure[r.load];
     } else if (r.contact >= 0) {
       std::vector<double> vals;
-      for (const auto& c : a.system().contact_states(a.displacement(), r.contact))
+      for (const auto& c : a.system().contact_states(a.displacement(), r.contact, a.loads().step))
         vals.push_back(r.quantity == "contact_force"         ? c.force
                        : r.quantity == "contact_penetration" ? std::max(-c.point.gap, 0.0)
                                                              : c.pressure);

@@ -191,7 +191,7 @@ std::vector<CellField> contact_point_fields(const Analysis& a) {
   f.components = 1;
   f.values.assign(m.num_nodes(), 0.0);
   for (std::size_t c = 0; c < m.contacts.size(); ++c)
-    for (const auto& s : a.system().contact_states(a.displacement(), static_cast<int>(c))) f.values[s.node] += s.pressure;
+    for (const auto& s : a.system().contact_states(a.displacement(), static_cast<int>(c), a.loads().step)) f.values[s.node] += s.pressure;
   return {f};
 }
 

@@ -258,7 +258,7 @@ TEST(DeformableContactDeck, PatchTestAnnulusOnADeformableFlatMaster) {
   // The master was stretched radially under the sheet (r of its outer edge 3 → 3.3 mm):
   // frictionless, the sheet slides over it and still carries p.
   EXPECT_NEAR(a.displacement()(2 * m.parts[1].nodes.front()), 0.3, 1e-12);
-  const auto states = a.system().contact_states(a.displacement(), 0);
+  const auto states = a.system().contact_states(a.displacement(), 0, a.loads().step);
   ASSERT_EQ(states.size(), 11u);
   for (std::size_t k = 1; k + 1 < states.size(); ++k) {  // interior nodes
     EXPECT_TRUE(states[k].point.active);

@@ -94,7 +94,7 @@ TEST(RigidContactDeck, PatchTestAnnulusOnRigidPlane) {
   a.run(cap);
   ASSERT_EQ(cap.rows.size(), 3u);
   const double p = 0.01, eps = 1e4;
-  const auto states = a.system().contact_states(a.displacement(), 0);
+  const auto states = a.system().contact_states(a.displacement(), 0, a.loads().step);
   ASSERT_EQ(states.size(), 11u);
   double worst = 0;
   for (std::size_t k = 1; k + 1 < states.size(); ++k) {  // interior nodes

@@ -6,6 +6,8 @@
 // outer surface presses on the artery and pushes it out.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "../support/capture.hpp"
 #include "../support/solid_decks.hpp"
 
@@ -51,4 +53,14 @@ TEST(SolidMembraneContact, ThePlaqueEntersThenPressesTheArteryOutwards) {
   // Penalty law: the largest penetration is about the largest pressure over ε (the pressure
   // output is per current area, the penetration's force per reference area).
   EXPECT_NEAR(last[pen] * 50.0 / last[pc], 1.0, 0.5);
+  // The final, pressed state as step 1 would see it: the pair waits for the plaque, so its
+  // nodes report no contact (the outputs once called them active).
+  double in_step2 = 0;
+  for (const auto& s : a.system().contact_states(a.displacement(), 0, 1)) in_step2 = std::max(in_step2, s.pressure);
+  EXPECT_GT(in_step2, 1e-3);
+  for (const auto& s : a.system().contact_states(a.displacement(), 0, 0)) {
+    EXPECT_FALSE(s.point.active) << s.node;
+    EXPECT_EQ(s.pressure, 0.0) << s.node;
+    EXPECT_EQ(s.force, 0.0) << s.node;
+  }
 }
