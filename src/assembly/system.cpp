@@ -8,7 +8,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "assembly/shell_nodes.hpp"
+#include "assembly/system_coloured.hpp"
 #include "elements/axisym_membrane.hpp"
+#include "elements/axisym_shell.hpp"
+#include "elements/shell_output.hpp"
+#include "loads/axisym_shell_pressure.hpp"
 #include "loads/axisym_pressure.hpp"
 #include "loads/surface_pressure.hpp"
 
@@ -19,12 +24,15 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
   std::vector<char> fixed(n, 0);
   for (const auto& b : model.boundaries)
     for (int node : model.node_sets[b.node_set].nodes)
-      for (int d : b.dofs) fixed[dpn_ * node + d] = 1;
+      for (int d : b.dofs) fixed[model.node_dof(node, d)] = 1;
+  // Equations node by node (a shell node's slopes right after its position), so that a node's
+  // equations are consecutive and grow with the node number.
   eq_.assign(n, -1);
-  for (int i = 0; i < n; ++i) {
+  for (int node = 0; node < model.num_nodes(); ++node)
+    for (int c = 0; c < model.node_dof_count(node); ++c)
+      if (const int d = model.node_dof(node, c); !fixed[d]) eq_[d] = num_free_++;
+  for (int i = 0; i < n; ++i)
     if (fixed[i]) prescribed_.push_back(i);
-    else eq_[i] = num_free_++;
-  }
 
   // Pattern: every pair of free DOFs whose nodes share an element, built column by
   // column from the sorted node adjacency (no triplet list of (n·d)² per element).
@@ -45,13 +53,13 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     auto& adj = adjacent[node];
     std::sort(adj.begin(), adj.end());
     adj.erase(std::unique(adj.begin(), adj.end()), adj.end());
-    for (int c = 0; c < dpn_; ++c) {
-      const int j = eq_[dpn_ * node + c];
+    for (int c = 0; c < model.node_dof_count(node); ++c) {
+      const int j = eq_[model.node_dof(node, c)];
       if (j < 0) continue;
-      // Equation numbers grow with the DOF index, so rows come out sorted.
+      // Equation numbers grow with the node number and within a node, so rows come out sorted.
       for (int m : adj)
-        for (int r = 0; r < dpn_; ++r)
-          if (const int i = eq_[dpn_ * m + r]; i >= 0) inner.push_back(i);
+        for (int r = 0; r < model.node_dof_count(m); ++r)
+          if (const int i = eq_[model.node_dof(m, r)]; i >= 0) inner.push_back(i);
       outer[j + 1] = static_cast<int>(inner.size());
     }
     adj.clear();
@@ -78,14 +86,14 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
       Block data;
       if (block.kind == ElementKind::tri3) data.tri = block_references<3>(model, part, block, first);
       if (block.kind == ElementKind::quad4) data.quad = block_references<4>(model, part, block, first);
-      const int nd = nodes_per_element(block.kind) * dpn_;
+      const int ndn = unknowns_per_node(block.kind), nd = nodes_per_element(block.kind) * ndn;
       data.scatter.resize(static_cast<std::size_t>(block.size()) * nd * nd);
       int* pos = data.scatter.data();
       for (int e = 0; e < block.size(); ++e) {
         const int* en = block.element(e);
         for (int a = 0; a < nd; ++a)
           for (int b = 0; b < nd; ++b) {
-            const int i = eq_[dpn_ * en[a / dpn_] + a % dpn_], j = eq_[dpn_ * en[b / dpn_] + b % dpn_];
+            const int i = eq_[model.node_dof(en[a / ndn], a % ndn)], j = eq_[model.node_dof(en[b / ndn], b % ndn)];
             *pos++ = (i >= 0 && j >= 0) ? position(i, j) : -1;
           }
       }
@@ -108,8 +116,8 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
         for (int node : block.nodes)
           node_enter[node] = node_enter[node] < 0 ? part.enter_step : std::min(node_enter[node], part.enter_step);
     for (int node = 0; node < model.num_nodes(); ++node)
-      for (int c = 0; c < dpn_; ++c) {
-        const int d = dpn_ * node + c;
+      for (int c = 0; c < model.node_dof_count(node); ++c) {
+        const int d = model.node_dof(node, c);
         dof_enter_[d] = std::max(0, node_enter[node]);
         if (dof_enter_[d] > 0 && eq_[d] >= 0) held_.push_back({d, position(eq_[d], eq_[d]), 1.0});
       }
@@ -148,6 +156,13 @@ void System::compute_hold_stiffness() {
           solid_nodes(model_, en, u0, X, x);
           axisym_solid(X, x, *part.solid_material, part.formulation, f, &Ke);
           d = Ke.diagonal();
+        } else if (block.kind == ElementKind::shell2) {
+          ShellNodes X, x;
+          ShellVector f;
+          ShellMatrix Ke;
+          shell_nodes(model_, en, u0, X, x);
+          axisym_shell(X, x, part.thickness, *part.material, f, &Ke, shell_quadrature(part));
+          d = Ke.diagonal();
         } else if (block.kind == ElementKind::axisym2) {
           AxisymNodes X, x;
           Eigen::Vector4d f;
@@ -170,7 +185,8 @@ void System::compute_hold_stiffness() {
           membrane3d<4>(blocks_[p][b].quad[e], x, *part.material, f, &Ke);
           d = Ke.diagonal();
         }
-        for (int a = 0; a < d.size(); ++a) diag(dpn_ * en[a / dpn_] + a % dpn_) += d(a);
+        const int ndn = unknowns_per_node(block.kind);
+        for (int a = 0; a < d.size(); ++a) diag(model_.node_dof(en[a / ndn], a % ndn)) += d(a);
       }
     }
   }
@@ -223,36 +239,11 @@ void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>&
   for (int e = 0; e < block.size(); ++e) order[next[colour[e]]++] = e;
 }
 
-template <class Kernel>
-void System::for_each_coloured(const Block& data, Kernel&& kernel) {
-  std::exception_ptr error;
-  int error_element = -1;
-  // Small colours run on one thread: below ~1000 elements the fork/join costs more than it saves.
-  constexpr int kMinParallel = 1024;
-  for (std::size_t c = 0; c + 1 < data.colour_start.size(); ++c) {
-    const int begin = data.colour_start[c], end = data.colour_start[c + 1];
-#pragma omp parallel for schedule(static) if (end - begin >= kMinParallel)
-    for (int k = begin; k < end; ++k) {
-      const int e = data.order[k];
-      try {
-        kernel(e);
-      } catch (...) {
-#pragma omp critical(tunica_assembly_error)
-        if (error_element < 0 || e < error_element) {
-          error = std::current_exception();
-          error_element = e;
-        }
-      }
-    }
-    if (error) std::rethrow_exception(error);
-  }
-}
-
 void System::apply_boundary(const LoadState& loads, Eigen::VectorXd& u) const {
   for (std::size_t k = 0; k < model_.boundaries.size(); ++k) {
     const auto& b = model_.boundaries[k];
     for (int node : model_.node_sets[b.node_set].nodes)
-      for (int d : b.dofs) u(dpn_ * node + d) = loads.boundary[k];
+      for (int d : b.dofs) u(model_.node_dof(node, d)) = loads.boundary[k];
   }
 }
 
@@ -390,6 +381,7 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
         case ElementKind::tri3: assemble_surface<3>(pi, bi, u, pressure[p], R, K, scale2); break;
         case ElementKind::quad4: assemble_surface<4>(pi, bi, u, pressure[p], R, K, scale2); break;
         case ElementKind::solid4: assemble_solid(pi, bi, u, R, K, scale2); break;
+        case ElementKind::shell2: assemble_shell(pi, bi, u, pressure[p], R, K, scale2); break;
       }
     }
   }
@@ -413,7 +405,13 @@ Eigen::VectorXd System::pressure_load(const Eigen::VectorXd& u, int l) const {
   for (const auto& block : part.blocks)
     for (int e = 0; e < block.size(); ++e) {
       const int* en = block.element(e);
-      if (block.kind == ElementKind::axisym2) {
+      if (block.kind == ElementKind::shell2) {
+        ShellNodes X, x;
+        ShellVector f;
+        shell_nodes(model_, en, u, X, x);
+        axisym_shell_pressure(X, x, load.sign, f, nullptr);
+        for (int a = 0; a < 8; ++a) g(shell_dof(model_, en, a)) += f(a);
+      } else if (block.kind == ElementKind::axisym2) {
         AxisymNodes X, x;
         Eigen::Vector4d f;
         axisym_nodes(model_, en, u, X, x);
@@ -444,7 +442,15 @@ double System::volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad) co
   for (const auto& block : part.blocks)
     for (int e = 0; e < block.size(); ++e) {
       const int* en = block.element(e);
-      if (block.kind == ElementKind::axisym2) {
+      if (block.kind == ElementKind::shell2) {
+        // V_e = π ∫ r² dz on the Hermite meridian (loads/axisym_shell_pressure.hpp).
+        ShellNodes X, x;
+        ShellVector ge;
+        shell_nodes(model_, en, u, X, x);
+        V += axisym_shell_volume(X, x, grad ? &ge : nullptr);
+        if (grad)
+          for (int a = 0; a < 8; ++a) (*grad)(shell_dof(model_, en, a)) += ge(a);
+      } else if (block.kind == ElementKind::axisym2) {
         // V_e = π ∫ r² dz = π Δz (r1² + r1 r2 + r2²)/3 for a straight segment.
         AxisymNodes X, x;
         axisym_nodes(model_, en, u, X, x);
@@ -522,10 +528,17 @@ std::vector<MembranePoint> System::points(const Eigen::VectorXd& u, int p) const
   if (part.is_solid()) return out;
   for (std::size_t b = 0; b < part.blocks.size(); ++b) {
     const ElementBlock& block = part.blocks[b];
-    out.reserve(out.size() + static_cast<std::size_t>(block.size()) * points_per_element(block.kind));
+    out.reserve(out.size() + static_cast<std::size_t>(block.size()) * points_per_element(part, block.kind));
     for (int e = 0; e < block.size(); ++e) {
       const int* en = block.element(e);
-      if (block.kind == ElementKind::axisym2) {
+      if (block.kind == ElementKind::shell2) {
+        ShellNodes X, x;
+        ShellVector f;
+        std::vector<ShellPoint> pts;
+        shell_nodes(model_, en, u, X, x);
+        axisym_shell(X, x, part.thickness, *part.material, f, nullptr, shell_quadrature(part), &pts);
+        for (const auto& pt : pts) out.push_back(shell_membrane_point(pt, part.thickness));
+      } else if (block.kind == ElementKind::axisym2) {
         AxisymNodes X, x;
         Eigen::Vector4d f;
         std::array<MembranePoint, 2> pts;

@@ -27,6 +27,7 @@
 #include "assembly/contact_assembly.hpp"
 #include "assembly/references.hpp"
 #include "assembly/sparse_matrix.hpp"
+#include "elements/axisym_shell.hpp"
 #include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"
 #include "model/model.hpp"
@@ -104,6 +105,10 @@ private:
                         double& scale2) const;
   void assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
                        double& scale2) const;
+  /// Axisymmetric shell block: f and K of elements/axisym_shell.hpp and the follower pressure on the
+  /// Hermite mid-surface (loads/axisym_shell_pressure.hpp), scattered through the DOF map (system_shell.cpp).
+  void assemble_shell(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
+                      double& scale2) const;
   /// Axisymmetric solid block: f and K of elements/axisym_solid.hpp, scattered like the membranes.
   void assemble_solid(int p, int b, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
                       double& scale2) const;
@@ -136,8 +141,18 @@ private:
 /// order[start[c] … start[c+1]).
 void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start);
 
-/// Gauss points per element of a kind.
+/// Gauss points per element of a kind (shells: see points_per_element(part, kind)).
 constexpr int points_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 1 : 4; }
+/// Gauss points per element of a block of a part (System::points): shells have their part's meridian points.
+inline int points_per_element(const Part& part, ElementKind k) {
+  return k == ElementKind::shell2 ? part.shell_meridian_points : points_per_element(k);
+}
+/// Unknowns per node of an element kind: 4 on shells (r, z, r′, z′), else the position DOFs.
+constexpr int unknowns_per_node(ElementKind k) { return k == ElementKind::shell2 ? 4 : k == ElementKind::tri3 || k == ElementKind::quad4 ? 3 : 2; }
+/// The quadrature of a shell part.
+inline ShellQuadrature shell_quadrature(const Part& part) {
+  return {part.shell_meridian_points, part.shell_thickness_points};
+}
 /// The material-dependent point states are MembranePoint for membranes and SolidPoint for solids.
 constexpr bool is_solid_kind(ElementKind k) { return k == ElementKind::solid4; }
 

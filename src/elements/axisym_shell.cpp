@@ -34,22 +34,16 @@ using J5 = Jet<5>;
 using Local = Eigen::Matrix<double, 5, 1>;
 using LocalB = Eigen::Matrix<double, 5, 8>;
 
-/// y = B u at ξ for the Hermite interpolation with tangent length L (see the header).
+/// y = B u at ξ for the Hermite interpolation with tangent length L (elements/hermite_meridian.hpp).
 LocalB local_map(double xi, double L) {
-  const double x2 = xi * xi, x3 = x2 * xi;
-  // Functions multiplying (x₁, x′₁, x₂, x′₂) and their first and second ξ-derivatives.
-  const double h[4] = {2 * x3 - 3 * x2 + 1, L * (x3 - 2 * x2 + xi), -2 * x3 + 3 * x2, L * (x3 - x2)};
-  const double dh[4] = {6 * x2 - 6 * xi, L * (3 * x2 - 4 * xi + 1), -6 * x2 + 6 * xi, L * (3 * x2 - 2 * xi)};
-  const double d2h[4] = {12 * xi - 6, L * (6 * xi - 4), -12 * xi + 6, L * (6 * xi - 2)};
-  // Unknown index of function j for component c (0 = r, 1 = z): node a = j/2, slope if j odd.
-  const auto idx = [](int j, int c) { return 4 * (j / 2) + 2 * (j % 2) + c; };
+  const HermiteBasis hb = hermite_basis(xi, L);
   LocalB B = LocalB::Zero();
   for (int j = 0; j < 4; ++j) {
-    B(0, idx(j, 0)) = h[j];
-    B(1, idx(j, 0)) = dh[j];
-    B(2, idx(j, 1)) = dh[j];
-    B(3, idx(j, 0)) = d2h[j];
-    B(4, idx(j, 1)) = d2h[j];
+    B(0, hermite_index(j, 0)) = hb.h[j];
+    B(1, hermite_index(j, 0)) = hb.dh[j];
+    B(2, hermite_index(j, 1)) = hb.dh[j];
+    B(3, hermite_index(j, 0)) = hb.d2h[j];
+    B(4, hermite_index(j, 1)) = hb.d2h[j];
   }
   return B;
 }
@@ -89,12 +83,7 @@ J5 layer_distance(const J5& c1, const J5& c2, const J5& c3, double V) {
 
 }  // namespace
 
-double axisym_shell(const ShellNodes& X, const ShellNodes& x, double H, const MembraneMaterial& material,
-                    ShellVector& f, ShellMatrix* K, const ShellQuadrature& quadrature,
-                    std::vector<ShellPoint>* points) {
-  if (!(H > 0)) throw std::invalid_argument("axisymmetric shell: thickness must be positive");
-  if (quadrature.meridian < 1 || quadrature.meridian > 16 || quadrature.thickness < 1 || quadrature.thickness > 16)
-    throw std::invalid_argument("axisymmetric shell: quadrature points must be in 1..16");
+double hermite_length(const ShellNodes& X) {
   const Eigen::Vector2d chord = X.block<2, 1>(0, 1) - X.block<2, 1>(0, 0);
   const double c = chord.norm();
   if (!(c > 0)) throw std::invalid_argument("axisymmetric shell: reference element has zero length");
@@ -104,7 +93,16 @@ double axisym_shell(const ShellNodes& X, const ShellNodes& x, double H, const Me
   const double cos_beta = 0.5 * (X.block<2, 1>(2, 0) + X.block<2, 1>(2, 1)).dot(chord) / c;
   if (!(cos_beta > 0))
     throw std::invalid_argument("axisymmetric shell: reference slopes point against the element");
-  const double L = 2.0 * c / (1.0 + cos_beta);
+  return 2.0 * c / (1.0 + cos_beta);
+}
+
+double axisym_shell(const ShellNodes& X, const ShellNodes& x, double H, const MembraneMaterial& material,
+                    ShellVector& f, ShellMatrix* K, const ShellQuadrature& quadrature,
+                    std::vector<ShellPoint>* points) {
+  if (!(H > 0)) throw std::invalid_argument("axisymmetric shell: thickness must be positive");
+  if (quadrature.meridian < 1 || quadrature.meridian > 16 || quadrature.thickness < 1 || quadrature.thickness > 16)
+    throw std::invalid_argument("axisymmetric shell: quadrature points must be in 1..16");
+  const double L = hermite_length(X);
 
   const Eigen::Map<const ShellVector> U(X.data()), u(x.data());
   const GaussRule gm = gauss_legendre(quadrature.meridian), gt = gauss_legendre(quadrature.thickness);
@@ -150,6 +148,8 @@ double axisym_shell(const ShellNodes& X, const ShellNodes& x, double H, const Me
       pt->zeta.resize(gt.t.size());
       pt->eta.resize(gt.t.size());
       pt->sigma.resize(2, static_cast<Eigen::Index>(gt.t.size()));
+      pt->stretch.resize(2, static_cast<Eigen::Index>(gt.t.size()));
+      pt->weight_zeta.resize(gt.t.size());
     }
     for (std::size_t k = 0; k < gt.t.size(); ++k) {
       const double zeta = 0.5 * H * gt.t[k], wz = 0.5 * H * gt.w[k];
@@ -174,6 +174,8 @@ double axisym_shell(const ShellNodes& X, const ShellNodes& x, double H, const Me
         pt->zeta[k] = zeta;
         pt->eta[k] = eta.v;
         pt->sigma.col(static_cast<Eigen::Index>(k)) = Eigen::Vector2d(C11.v * m.S(0), C22.v * m.S(1));
+        pt->stretch.col(static_cast<Eigen::Index>(k)) = Eigen::Vector2d(std::sqrt(C11.v), std::sqrt(C22.v));
+        pt->weight_zeta[k] = wz;
       }
     }
     f += B.transpose() * grad;
@@ -192,6 +194,8 @@ double axisym_shell(const ShellNodes& X, const ShellNodes& x, double H, const Me
       pt->lambda = Eigen::Vector3d(y(0) / R, a.v / A, A * R / (a.v * y(0)));
       pt->K = Eigen::Vector2d(Y(2) / (A * R), kappa_ref / (A * A * A));
       pt->k = Eigen::Vector2d(y(2) / (a.v * y(0)), kappa.v / (a2.v * a.v));
+      pt->t = Eigen::Vector2d(y(1), y(2)) / a.v;
+      pt->T = Eigen::Vector2d(Y(1), Y(2)) / A;
       pt->W = Wa;
       pt->weight = wg * two_pi * R * A;
     }

@@ -76,15 +76,10 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "elements/hermite_meridian.hpp"
 #include "materials/membrane_material.hpp"
 
 namespace tunica {
-
-/// Nodal state of a 2-node axisymmetric shell element: column a = (r_a, z_a, r′_a, z′_a),
-/// position and slope (∂/∂S, reference arc length). Reference slopes must be unit vectors.
-using ShellNodes = Eigen::Matrix<double, 4, 2>;
-using ShellVector = Eigen::Matrix<double, 8, 1>;
-using ShellMatrix = Eigen::Matrix<double, 8, 8>;
 
 /// Gauss–Legendre points along the meridian and through the thickness (each 1..16).
 struct ShellQuadrature {
@@ -101,6 +96,10 @@ struct ShellPoint {
   std::vector<double> zeta;                           ///< reference distances ζ of the thickness points
   std::vector<double> eta;                            ///< their current distances η from the mid-surface
   Eigen::Matrix2Xd sigma;                             ///< Cauchy (σ_θ, σ_s) = (λ_θ² S₁, λ_s² S₂) per thickness point
+  Eigen::Matrix2Xd stretch;                           ///< layer stretches (λ_θ(ζ), λ_s(ζ)) per thickness point
+  std::vector<double> weight_zeta;                    ///< Gauss weights of the thickness points (Σ = H)
+  Eigen::Vector2d t = Eigen::Vector2d::UnitY();       ///< current unit meridian tangent x_ξ/|x_ξ|
+  Eigen::Vector2d T = Eigen::Vector2d::UnitY();       ///< reference unit meridian tangent X_ξ/|X_ξ|
   double W = 0;       ///< energy per reference mid-surface area ∫ Ŵ (R_ζ A_ζ)/(R A) dζ
   double weight = 0;  ///< Gauss weight × 2πR A (Σ W·weight = Π_e)
 };

@@ -20,7 +20,13 @@ struct MembranePoint {
   Eigen::Matrix3d cauchy = Eigen::Matrix3d::Zero();  ///< Cauchy stress tensor σ = F S Fᵀ in global axes
   Eigen::Vector3d e1 = Eigen::Vector3d::UnitX();     ///< reference material direction 1 (unit, tangent)
   Eigen::Vector3d e2 = Eigen::Vector3d::UnitY();     ///< reference material direction 2 (unit, tangent)
-  double thickness = 0;            ///< current thickness h = λ3 H
+  double thickness = 0;            ///< current thickness h = λ3 H (shells: ∫ dη, elements/shell_output.hpp)
+  /// Axisymmetric shells only (elements/shell_output.hpp; zero for membranes): bending moments
+  /// (M_hoop, M_meridian) per current length, and the linearized surface stresses σ ± 6M/h²
+  /// on the outer (side n) and inner surface.
+  Eigen::Vector2d moment = Eigen::Vector2d::Zero();
+  Eigen::Vector2d sigma_outer = Eigen::Vector2d::Zero();
+  Eigen::Vector2d sigma_inner = Eigen::Vector2d::Zero();
   double W = 0;                    ///< strain energy per reference volume Ŵ
   double weight = 0;               ///< quadrature weight × reference volume element (Σ W·weight = stored energy)
 };

@@ -12,6 +12,7 @@
 
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
+#include "io/deck_shell_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "mesh/meridian.hpp"
@@ -35,12 +36,14 @@ const ComponentSpec& part_spec() {
       "parts", "",
       "A body: its element type, material, reference thickness, mesh and (3-D) material frame. "
       "`axisymmetric_membrane` parts (2-node elements on a meridian in the (r, z) plane) get the node sets "
-      "`<part>.start`, `<part>.end` and `<part>.all`; `membrane` parts (3-node triangles and 4-node "
+      "`<part>.start`, `<part>.end` and `<part>.all`; `axisymmetric_shell` parts likewise, with their own "
+      "quadrature keys (see `parts` (type `axisymmetric_shell`)); `membrane` parts (3-node triangles and 4-node "
       "quadrilaterals in 3-D) get `<part>.all` and their generator's sets as `<part>.<set>`, or the "
       "physical curves and points of their Gmsh file; `axisymmetric_solid` parts have their own keys "
       "(see `parts` (type `axisymmetric_solid`)). A deck's parts are all axisymmetric (membranes and "
       "solids) or all 3-D. A part with `enter_step` takes part from that step on (see the user guide).",
-      {required(one_of(text("element", "element type"), {"axisymmetric_membrane", "membrane", "axisymmetric_solid"})),
+      {required(one_of(text("element", "element type"),
+                       {"axisymmetric_membrane", "membrane", "axisymmetric_solid", "axisymmetric_shell"})),
        required(text("material", "name of a material in `materials`")),
        required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
        required(structured("mesh", "map", "`type:` a generator (see Meshes) or `gmsh`, and its keys")),
@@ -65,7 +68,10 @@ const ComponentSpec& boundary_spec() {
       "A prescribed displacement of some DOFs of a node set: 0 until a step sets it, then ramped "
       "linearly within the step to the value the step's `set` gives, and held after.",
       {required(text("node_set", "name of a node set")),
-       required(structured("dofs", "list", "DOFs among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`"))}};
+       required(structured("dofs", "list",
+                           "DOFs among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`; nodes of "
+                           "`axisymmetric_shell` parts also `slope_r`, `slope_z`: the change of the meridian slope "
+                           "∂r/∂S, ∂z/∂S (dimensionless; a boundary that mixes slopes and positions can only be 0)"))}};
   return s;
 }
 
@@ -266,9 +272,10 @@ void read_parts(const DeckNode& deck, Model& m) {
   SurfaceMeshCache cache;
   bool first = true;
   for (const auto& [name, node] : parts.entries()) {
-    const bool solid = node.is_map() && node.has("element") && node["element"].is_scalar() &&
-                       node["element"].as_string() == "axisymmetric_solid";
-    const Params p = read_params(node, solid ? solid_part_spec() : part_spec(), m.units);
+    const std::string element =
+        node.is_map() && node.has("element") && node["element"].is_scalar() ? node["element"].as_string() : "";
+    const bool solid = element == "axisymmetric_solid", shell = element == "axisymmetric_shell";
+    const Params p = read_params(node, solid ? solid_part_spec() : shell ? shell_part_spec() : part_spec(), m.units);
     Part part;
     part.name = name;
     part.element = p.text("element");
@@ -296,9 +303,14 @@ void read_parts(const DeckNode& deck, Model& m) {
     if (solid) read_solid_part(node, p, part, m);
     else if (g == Geometry::axisymmetric) read_meridian_part(node, part, m);
     else read_surface_part(node, part, m, cache);
+    if (shell) {
+      part.blocks.front().kind = ElementKind::shell2;
+      finish_shell_part(node, p, part, m);
+    }
     m.parts.push_back(std::move(part));
   }
   if (m.geometry == Geometry::three_d) finish_surface_parts(parts, m);
+  m.number_slope_dofs();
 }
 
 void read_node_sets(const DeckNode& deck, Model& m) {
@@ -345,14 +357,23 @@ void read_boundaries(const DeckNode& deck, Model& m) {
     Boundary b{name, node_set_ref(p, "node_set", m), {}, node.where()};
     const DeckNode dofs = node.required("dofs");
     const std::vector<DeckNode> list = dofs.is_sequence() ? dofs.items() : std::vector<DeckNode>{dofs};
-    const std::vector<std::string> dof_names = m.dof_names();
+    std::vector<std::string> dof_names = m.dof_names();
+    if (m.geometry == Geometry::axisymmetric) dof_names.insert(dof_names.end(), {"slope_r", "slope_z"});
     for (const auto& d : list) {
       const std::string s = d.as_string();
       auto it = std::find(dof_names.begin(), dof_names.end(), s);
       if (it == dof_names.end())
         d.fail("unknown DOF '" + s + "' (" +
-               (m.geometry == Geometry::axisymmetric ? "axisymmetric DOFs are r and z" : "3-D DOFs are x, y and z") + ")");
-      b.dofs.push_back(static_cast<int>(it - dof_names.begin()));
+               (m.geometry == Geometry::axisymmetric ? "axisymmetric DOFs are r and z, and slope_r and slope_z on shells"
+                                                     : "3-D DOFs are x, y and z") +
+               ")");
+      const int c = static_cast<int>(it - dof_names.begin());
+      if (c >= m.dofs_per_node())
+        for (int n : m.node_sets[b.node_set].nodes)
+          if (!m.has_slopes(n))
+            d.fail("DOF '" + s + "': node set '" + p.text("node_set") +
+                   "' has nodes without slopes (only nodes of axisymmetric_shell parts have slope_r and slope_z)");
+      b.dofs.push_back(c);
     }
     m.boundaries.push_back(std::move(b));
   }
@@ -361,7 +382,7 @@ void read_boundaries(const DeckNode& deck, Model& m) {
   for (const auto& b : m.boundaries)
     for (int n : m.node_sets[b.node_set].nodes)
       for (int d : b.dofs) {
-        auto [it, fresh] = owner.emplace(static_cast<long>(m.dofs_per_node()) * n + d, b.name);
+        auto [it, fresh] = owner.emplace(static_cast<long>(m.node_dof(n, d)), b.name);
         if (!fresh && it->second != b.name)
           throw InputError(b.where, fmt::format("boundary '{}' prescribes a DOF that boundary '{}' already prescribes",
                                                 b.name, it->second));
@@ -435,7 +456,17 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
           value.fail(fmt::format("'{}' acts on part '{}', which enters in step {} '{}': set it in that step or later",
                                  target, m.parts[late].name, m.parts[late].enter_step + 1,
                                  step_name(steps, m.parts[late].enter_step)));
-        s.targets[target] = read_quantity(value, is_boundary ? Dimension::length : Dimension::pressure, m.units);
+        // A boundary on slopes only is dimensionless; one mixing slopes and positions can only hold them at 0.
+        int slopes = 0, positions = 0;
+        for (const auto& b : m.boundaries)
+          if (b.name == target)
+            for (int d : b.dofs) ++(d >= m.dofs_per_node() ? slopes : positions);
+        const Dimension dim = !is_boundary ? Dimension::pressure : positions == 0 && slopes > 0 ? Dimension::dimensionless
+                                                                                                : Dimension::length;
+        s.targets[target] = read_quantity(value, dim, m.units);
+        if (slopes > 0 && positions > 0 && s.targets[target] != 0)
+          value.fail("boundary '" + target + "' holds slopes and positions: it can only be 0 (give the slopes their "
+                     "own boundary to prescribe them)");
       }
     }
     if (node.has("volume_control")) {
@@ -497,6 +528,11 @@ void read_output(const DeckNode& deck, Model& m) {
       const bool axisym_only = cylindrical || r.quantity == "hydrostatic_pressure" || r.quantity == "volume_ratio";
       if (axisym_only && m.geometry != Geometry::axisymmetric)
         h.fail("quantity", "'" + r.quantity + "' is a quantity of axisymmetric parts");
+      const bool shell_only = r.quantity.rfind("M_", 0) == 0 || r.quantity.find("_outer") != std::string::npos ||
+                              r.quantity.find("_inner") != std::string::npos;
+      if (shell_only && !m.parts[r.part].is_shell())
+        h.fail("quantity", "'" + r.quantity + "' is a quantity of axisymmetric_shell parts; part '" + h.text("part") +
+                               "' is an " + m.parts[r.part].element + " part");
       if (!axisym_only && r.quantity != "radius" && m.parts[r.part].is_solid())
         h.fail("quantity", "'" + r.quantity + "' is a membrane quantity; part '" + h.text("part") +
                                "' is a solid (its quantities: sigma_rr, sigma_thetatheta, sigma_zz, sigma_rz, "
@@ -573,6 +609,14 @@ const std::vector<HistoryQuantity>& history_quantities() {
       {"sigma_min", "part", Dimension::pressure, "minimum in-plane principal Cauchy stress"},
       {"thickness", "part", Dimension::length, "current thickness h = λ3 H"},
       {"radius", "part", Dimension::length, "current distance of the Gauss points from the z axis"},
+      {"M_1", "part", Dimension::force,
+       "axisymmetric shells: hoop bending moment per unit length ∫σ_θ η dη (positive: the side of n in tension)"},
+      {"M_2", "part", Dimension::force, "axisymmetric shells: meridional bending moment per unit length ∫σ_s η dη"},
+      {"sigma_1_outer", "part", Dimension::pressure,
+       "axisymmetric shells: hoop stress on the outer surface (side n), N/h + 6M/h² (σ_1 is N/h on shells)"},
+      {"sigma_1_inner", "part", Dimension::pressure, "axisymmetric shells: hoop stress on the inner surface, N/h − 6M/h²"},
+      {"sigma_2_outer", "part", Dimension::pressure, "axisymmetric shells: meridional stress on the outer surface, N/h + 6M/h²"},
+      {"sigma_2_inner", "part", Dimension::pressure, "axisymmetric shells: meridional stress on the inner surface, N/h − 6M/h²"},
       {"sigma_rr", "part", Dimension::pressure,
        "axisymmetric parts: Cauchy stress σ_rr in cylindrical axes (membranes: of σ = σ_ss t⊗t + σ_θθ e_θ⊗e_θ, t the "
        "meridian tangent)"},
@@ -606,7 +650,7 @@ const std::vector<HistoryQuantity>& history_quantities() {
 }
 
 std::vector<ComponentSpec> deck_sections() {
-  return {units_spec(),     part_spec(),   solid_part_spec(), frame_spec(),   node_set_spec(), boundary_spec(),
+  return {units_spec(),     part_spec(),   solid_part_spec(), shell_part_spec(), frame_spec(),   node_set_spec(), boundary_spec(),
           load_spec(),      cylinder_spec(), polyline_spec(), contact_spec(), solver_spec(),
           step_spec(),      output_spec(), history_spec()};
 }

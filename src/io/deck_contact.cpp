@@ -157,8 +157,8 @@ std::vector<int> read_chain(const Params& p, const std::string& key, const Model
   const int part = m.find_part(name);
   if (part_index) *part_index = part;
   if (part >= 0) {
-    if (m.parts[part].element != "axisymmetric_membrane")
-      p.fail(key, "part '" + name + "' is not an axisymmetric membrane (its nodes are no chain): name an ordered node set "
+    if (m.parts[part].element != "axisymmetric_membrane" && !m.parts[part].is_shell())
+      p.fail(key, "part '" + name + "' is not an axisymmetric membrane or shell (its nodes are no chain): name an ordered node set "
                   "along its boundary");
     chain = m.parts[part].nodes;
   } else {

@@ -16,7 +16,8 @@ const ComponentSpec& solid_part_spec() {
       "quadrilaterals in the (r, z) plane (theory §10), e.g. the plaque of an angioplasty model. It gets "
       "the ordered node sets `<part>.inner`, `<part>.outer` (nodes in increasing z), `<part>.bottom`, "
       "`<part>.top` (increasing r) and `<part>.all`. Its material must be a solid material.",
-      {required(one_of(text("element", "element type"), {"axisymmetric_membrane", "membrane", "axisymmetric_solid"})),
+      {required(one_of(text("element", "element type"),
+                       {"axisymmetric_membrane", "membrane", "axisymmetric_solid", "axisymmetric_shell"})),
        required(text("material", "name of a solid material in `materials` (e.g. `type: neo_hookean_solid`)")),
        with_default(one_of(text("formulation",
                                 "mean_dilatation: the Q1/P0 element (element-constant pressure, no volumetric "

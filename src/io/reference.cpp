@@ -29,8 +29,9 @@ std::string deck_reference_markdown() {
     if (sec.section == "steps") s += "A list of entries with these keys:\n\n";
     if (sec.section == "output.history") s += "A list of entries with these keys:\n\n";
     s += params_markdown(sec) + "\n";
-    if (sec.section == "parts") {
-      s += "### Meshes (`parts.<name>.mesh`)\n\nAxisymmetric parts (`element: axisymmetric_membrane`):\n\n";
+    if (sec.section == "parts" && sec.type.empty()) {  // once, after the generic parts section
+      s += "### Meshes (`parts.<name>.mesh`)\n\nAxisymmetric parts (`element: axisymmetric_membrane` or "
+           "`axisymmetric_shell`):\n\n";
       for (const auto& [name, t] : meridian_types())
         s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
       s += "3-D parts (`element: membrane`):\n\n";

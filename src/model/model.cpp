@@ -14,4 +14,24 @@ int Model::find_part(const std::string& name) const {
   return -1;
 }
 
+void Model::number_slope_dofs() {
+  slope_dof.clear();
+  slope_ref.clear();
+  num_slope_nodes = 0;
+  bool any = false;
+  for (const auto& part : parts) any = any || part.is_shell();
+  if (!any) return;
+  slope_dof.assign(num_nodes(), -1);
+  slope_ref.assign(num_nodes(), Eigen::Vector2d::Zero());
+  const int first = dofs_per_node() * num_nodes();
+  for (const auto& part : parts) {
+    if (!part.is_shell()) continue;
+    for (std::size_t i = 0; i < part.nodes.size(); ++i) {
+      const int n = part.nodes[i];
+      if (slope_dof[n] < 0) slope_dof[n] = first + 2 * num_slope_nodes++;
+      slope_ref[n] = part.tangents[i];
+    }
+  }
+}
+
 }  // namespace tunica

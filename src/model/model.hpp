@@ -4,6 +4,14 @@
 // and output requests. A model is either axisymmetric (two DOFs per node,
 // (u_r, u_z); positions (r, z, 0)) or three-dimensional (three DOFs per node,
 // (u_x, u_y, u_z)).
+//
+// DOF map. DOF c of node n is d = dofs_per_node() n + c for the positions. The
+// nodes of axisymmetric shell parts (elements/axisym_shell.hpp) carry two more
+// unknowns, the changes of the meridian slope (u′_r, u′_z) = x′ − X′ (′ = ∂/∂S,
+// reference arc length), numbered after all position DOFs:
+// d = slope_dof[n] + c − 2 for c = 2 (slope_r), 3 (slope_z). Code that reads
+// positions keeps d = 2n + c; code that handles every unknown of a node uses
+// node_dof(n, c) for c < node_dof_count(n).
 #include <Eigen/Dense>
 #include <array>
 #include <map>
@@ -25,8 +33,11 @@ enum class Geometry { axisymmetric, three_d };
 
 /// Element kinds: the 2-node axisymmetric membrane, the 3-node triangle and the 4-node quadrilateral
 /// membrane, and the 4-node axisymmetric solid (a quadrilateral in the (r, z) plane, elements/axisym_solid.hpp).
-enum class ElementKind { axisym2, tri3, quad4, solid4 };
-constexpr int nodes_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 3 : 4; }
+/// shell2: the 2-node axisymmetric Kirchhoff–Love shell (elements/axisym_shell.hpp), 4 unknowns per node.
+enum class ElementKind { axisym2, tri3, quad4, solid4, shell2 };
+constexpr int nodes_per_element(ElementKind k) {
+  return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2 : k == ElementKind::tri3 ? 3 : 4;
+}
 
 /// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
 struct ElementBlock {
@@ -53,12 +64,18 @@ struct Part {
   const SolidMaterial* solid_material = nullptr;  ///< solid parts (element `axisymmetric_solid`)
   SolidFormulation formulation = SolidFormulation::mean_dilatation;  ///< solid parts
   std::string material_name;
-  double thickness = 0;                    ///< reference thickness H (membranes)
+  double thickness = 0;                    ///< reference thickness H (membranes and shells)
+  int shell_meridian_points = 3;           ///< shells: Gauss points along each element's meridian
+  int shell_thickness_points = 5;          ///< shells: Gauss points through the thickness
   std::vector<ElementBlock> blocks;        ///< axisymmetric membrane: one axisym2 block; solid: one solid4
                                            ///< block; 3-D: triangles and/or quads
   std::vector<int> nodes;                  ///< global node numbers (axisymmetric membrane: in meridian order;
                                            ///< solid: the grid's nodes, row by row from the bottom)
   FrameRule frame;                         ///< 3-D parts
+  /// Axisymmetric shell parts: reference unit meridian tangent per node of `nodes`
+  /// (mesh/meridian_tangents.hpp), in the direction of node order.
+  std::vector<Eigen::Vector2d> tangents;
+  bool is_shell() const { return element == "axisymmetric_shell"; }
   /// 0-based index of the step from which the part is assembled (`enter_step`; 0: from the start).
   /// Before it the part takes no part: its elements, the loads on it and its contact pairs are
   /// skipped and the nodes only it uses are held at their reference positions (see Model::part_active).
@@ -81,7 +98,7 @@ struct NodeSet {
 struct Boundary {
   std::string name;
   int node_set = -1;
-  std::vector<int> dofs;  ///< 0 = r, 1 = z
+  std::vector<int> dofs;  ///< 0 = r, 1 = z (3-D: x, y, z); axisymmetric shell nodes: 2 = slope_r, 3 = slope_z
   SourceLocation where;
 };
 
@@ -182,6 +199,12 @@ struct Model {
   UnitSystem units;
   Geometry geometry = Geometry::axisymmetric;
   std::vector<Eigen::Vector3d> X;  ///< reference node positions (axisymmetric: (r, z, 0))
+  /// Per node: the DOF index of its slope unknown u′_r (u′_z follows), −1 if the node is on no
+  /// shell part; empty if the model has no shell part (see the DOF map above).
+  std::vector<int> slope_dof;
+  /// Per node: its reference unit meridian tangent X′ = (R′, Z′) (shell nodes; zero elsewhere).
+  std::vector<Eigen::Vector2d> slope_ref;
+  int num_slope_nodes = 0;
   std::map<std::string, std::unique_ptr<MembraneMaterial>> materials;
   std::map<std::string, std::unique_ptr<SolidMaterial>> solid_materials;  ///< same `materials` section, solid types
   std::vector<Part> parts;
@@ -195,7 +218,17 @@ struct Model {
 
   int num_nodes() const { return static_cast<int>(X.size()); }
   int dofs_per_node() const { return geometry == Geometry::axisymmetric ? 2 : 3; }
-  int num_dofs() const { return dofs_per_node() * num_nodes(); }
+  int num_dofs() const { return dofs_per_node() * num_nodes() + 2 * num_slope_nodes; }
+  bool has_slopes(int node) const { return !slope_dof.empty() && slope_dof[node] >= 0; }
+  /// Number of unknowns of a node: dofs_per_node(), + 2 on shell nodes.
+  int node_dof_count(int node) const { return dofs_per_node() + (has_slopes(node) ? 2 : 0); }
+  /// DOF index of unknown c of a node (c < node_dof_count(node); see the DOF map above).
+  int node_dof(int node, int c) const {
+    return c < dofs_per_node() ? dofs_per_node() * node + c : slope_dof[node] + c - dofs_per_node();
+  }
+  /// Gives the nodes of the shell parts their slope DOFs and reference slopes
+  /// (Part::tangents; after all parts are read).
+  void number_slope_dofs();
   /// DOF names in node order: {"r", "z"} or {"x", "y", "z"}.
   std::vector<std::string> dof_names() const {
     return geometry == Geometry::axisymmetric ? std::vector<std::string>{"r", "z"} : std::vector<std::string>{"x", "y", "z"};

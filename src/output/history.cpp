@@ -68,6 +68,12 @@ double point_value(const MembranePoint& p, const std::string& q) {
   if (q == "sigma_min") return p.sigma_principal(1);
   if (q == "thickness") return p.thickness;
   if (q == "radius") return p.r;
+  if (q == "M_1") return p.moment(0);
+  if (q == "M_2") return p.moment(1);
+  if (q == "sigma_1_outer") return p.sigma_outer(0);
+  if (q == "sigma_1_inner") return p.sigma_inner(0);
+  if (q == "sigma_2_outer") return p.sigma_outer(1);
+  if (q == "sigma_2_inner") return p.sigma_inner(1);
   throw std::logic_error("unknown element quantity " + q);
 }
 

@@ -24,16 +24,23 @@ struct CellField {
 /// Membrane fields (the first 8) are NaN on solid cells. Every cell has the Cauchy stress in
 /// cylindrical axes (σ_rr, σ_θθ, σ_zz, σ_rz), the hydrostatic pressure −tr σ/3 and J: solids from
 /// their Gauss points; membranes from σ = σ_ss t⊗t + σ_θθ e_θ⊗e_θ (t the meridian tangent; a tube's
-/// σ_zz is its meridional stress, σ_rr = σ_rz = 0) and J = 1.
+/// σ_zz is its meridional stress, σ_rr = σ_rz = 0) and J = 1. Shells report as membranes with their
+/// membrane-equivalent stresses N/h (elements/shell_output.hpp) and add the bending moments and the
+/// outer/inner surface stresses (the last 6 fields: 0 on membranes, NaN on solids).
 std::vector<CellField> cell_fields(const Analysis& a) {
   const Model& m = a.model();
   const std::string s = unit_suffix(m.units, Dimension::pressure);
   const std::string l = unit_suffix(m.units, Dimension::length);
+  const std::string fo = unit_suffix(m.units, Dimension::force);
   std::vector<CellField> f = {{"lambda_hoop", {}},       {"lambda_meridional", {}}, {"lambda_thickness", {}},
                               {"S_hoop" + s, {}},        {"S_meridional" + s, {}},  {"sigma_hoop" + s, {}},
                               {"sigma_meridional" + s, {}}, {"thickness" + l, {}},  {"part", {}},
                               {"sigma_rr" + s, {}},      {"sigma_thetatheta" + s, {}}, {"sigma_zz" + s, {}},
-                              {"sigma_rz" + s, {}},      {"hydrostatic_pressure" + s, {}}, {"J", {}}};
+                              {"sigma_rz" + s, {}},      {"hydrostatic_pressure" + s, {}}, {"J", {}},
+                              {"M_hoop" + fo, {}},       {"M_meridional" + fo, {}},
+                              {"sigma_hoop_outer" + s, {}}, {"sigma_hoop_inner" + s, {}},
+                              {"sigma_meridional_outer" + s, {}}, {"sigma_meridional_inner" + s, {}}};
+  constexpr int kFields = 21;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
     if (m.parts[p].is_solid()) {
@@ -45,27 +52,35 @@ std::vector<CellField> cell_fields(const Analysis& a) {
           sigma += 0.25 * pts[4 * e + g].sigma;
           J += 0.25 * pts[4 * e + g].J;
         }
-        const double v[15] = {nan, nan, nan, nan, nan, nan, nan, nan, static_cast<double>(p),
-                              sigma(0), sigma(2), sigma(1), sigma(3), -(sigma(0) + sigma(1) + sigma(2)) / 3.0, J};
-        for (int k = 0; k < 15; ++k) f[k].values.push_back(v[k]);
+        const double v[kFields] = {nan, nan, nan, nan, nan, nan, nan, nan, static_cast<double>(p),
+                                   sigma(0), sigma(2), sigma(1), sigma(3), -(sigma(0) + sigma(1) + sigma(2)) / 3.0, J,
+                                   nan, nan, nan, nan, nan, nan};
+        for (int k = 0; k < kFields; ++k) f[k].values.push_back(v[k]);
       }
       continue;
     }
     const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
-    for (std::size_t e = 0; 2 * e + 1 < pts.size(); ++e) {
-      const MembranePoint& g0 = pts[2 * e];
-      const MembranePoint& g1 = pts[2 * e + 1];
-      // The Cauchy tensor in the meridian plane θ = 0: x = r, y = hoop, z = z.
-      const Eigen::Matrix3d c = 0.5 * (g0.cauchy + g1.cauchy);
-      const double v[15] = {0.5 * (g0.lambda(0) + g1.lambda(0)), 0.5 * (g0.lambda(1) + g1.lambda(1)),
-                            0.5 * (g0.lambda(2) + g1.lambda(2)), 0.5 * (g0.S(0) + g1.S(0)),
-                            0.5 * (g0.S(1) + g1.S(1)),           0.5 * (g0.sigma(0) + g1.sigma(0)),
-                            0.5 * (g0.sigma(1) + g1.sigma(1)),   0.5 * (g0.thickness + g1.thickness),
-                            static_cast<double>(p),              c(0, 0),
-                            c(1, 1),                             c(2, 2),
-                            c(0, 2),                             -c.trace() / 3.0,
-                            1.0};
-      for (int k = 0; k < 15; ++k) f[k].values.push_back(v[k]);
+    const int q = points_per_element(m.parts[p], m.parts[p].blocks.front().kind);
+    for (std::size_t e = 0; q * (e + 1) <= pts.size(); ++e) {
+      MembranePoint g;  // the element's Gauss-point average
+      g.lambda.setZero();
+      for (int k = 0; k < q; ++k) {
+        const MembranePoint& x = pts[q * e + k];
+        g.lambda += x.lambda / q;
+        g.S += x.S / q;
+        g.sigma += x.sigma / q;
+        g.thickness += x.thickness / q;
+        g.cauchy += x.cauchy / q;  // in the meridian plane θ = 0: x = r, y = hoop, z = z
+        g.moment += x.moment / q;
+        g.sigma_outer += x.sigma_outer / q;
+        g.sigma_inner += x.sigma_inner / q;
+      }
+      const Eigen::Matrix3d& c = g.cauchy;
+      const double v[kFields] = {g.lambda(0), g.lambda(1), g.lambda(2), g.S(0), g.S(1), g.sigma(0), g.sigma(1),
+                                 g.thickness, static_cast<double>(p), c(0, 0), c(1, 1), c(2, 2), c(0, 2),
+                                 -c.trace() / 3.0, 1.0, g.moment(0), g.moment(1), g.sigma_outer(0), g.sigma_inner(0),
+                                 g.sigma_outer(1), g.sigma_inner(1)};
+      for (int k = 0; k < kFields; ++k) f[k].values.push_back(v[k]);
     }
   }
   return f;

@@ -1,0 +1,70 @@
+#include "io/deck_shell_parts.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "elements/axisym_shell.hpp"
+#include "mesh/meridian_tangents.hpp"
+
+namespace tunica {
+
+const ComponentSpec& shell_part_spec() {
+  static const ComponentSpec s{
+      "parts", "axisymmetric_shell",
+      "An axisymmetric Kirchhoff–Love shell (selected by `element: axisymmetric_shell`; theory §11): a "
+      "layered incompressible shell of revolution with membrane and bending stiffness, 2-node elements with a "
+      "cubic Hermite meridian. Each node carries (r, z) and the meridian slopes (∂r/∂S, ∂z/∂S) (S: reference "
+      "arc length), whose changes are the DOFs `slope_r`, `slope_z` of `boundary`. Same meshes (`line`, "
+      "`arc`), node sets (`<part>.start`, `.end`, `.all`), pressure loads and contact as "
+      "`axisymmetric_membrane`; any membrane material, evaluated in each layer. Slopes left free at an end "
+      "make a hinge; a clamped or symmetry end of a tube holds `slope_r`, a pole on the axis holds `r` and "
+      "`slope_z`.",
+      {required(one_of(text("element", "element type"),
+                       {"axisymmetric_membrane", "membrane", "axisymmetric_solid", "axisymmetric_shell"})),
+       required(text("material", "name of a membrane material in `materials`, used in every layer")),
+       required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
+       required(structured("mesh", "map", "`type: line` or `arc` and its keys (see Meshes)")),
+       with_default(at_most(at_least(integer("meridian_points", "Gauss points along each element's meridian"), 2), 16),
+                    "3"),
+       with_default(at_most(at_least(integer("thickness_points", "Gauss points through the thickness (layers)"), 2), 16),
+                    "5"),
+       text("enter_step", "name of the step from which the part is assembled, stress free in its deck geometry "
+                          "(default: from the start; see the user guide)")}};
+  return s;
+}
+
+void finish_shell_part(const DeckNode& node, const Params& p, Part& part, const Model& m) {
+  part.shell_meridian_points = static_cast<int>(p.integer("meridian_points"));
+  part.shell_thickness_points = static_cast<int>(p.integer("thickness_points"));
+  const DeckNode mesh = node["mesh"];
+  Meridian meridian;
+  for (int n : part.nodes) meridian.push_back(m.X[n].head<2>());
+  try {
+    part.tangents = meridian_tangents(meridian);
+  } catch (const std::invalid_argument& e) {
+    mesh.fail(std::string("shell part '") + part.name + "': " + e.what());
+  }
+  // Each element at its reference state: the kernel's own checks of the reference geometry.
+  const ShellQuadrature quadrature{part.shell_meridian_points, part.shell_thickness_points};
+  const ElementBlock& block = part.blocks.front();
+  for (int e = 0; e < block.size(); ++e) {
+    ShellNodes X;
+    for (int a = 0; a < 2; ++a) {
+      X.block<2, 1>(0, a) = meridian[static_cast<std::size_t>(e + a)];
+      X.block<2, 1>(2, a) = part.tangents[static_cast<std::size_t>(e + a)];
+    }
+    ShellVector f;
+    try {
+      axisym_shell(X, X, part.thickness, *part.material, f, nullptr, quadrature);
+    } catch (const std::exception& ex) {
+      const std::string what = ex.what();
+      const bool thick = what.find("thickness") != std::string::npos || what.find("layer") != std::string::npos;
+      const std::string message = fmt::format("shell part '{}', element {}: {}", part.name, e, what);
+      if (thick) p.fail("thickness", message);
+      mesh.fail(message);
+    }
+  }
+}
+
+}  // namespace tunica
