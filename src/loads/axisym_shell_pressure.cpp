@@ -15,11 +15,15 @@ struct MeridianPoint {
   double r = 0, rx = 0, zx = 0;
 };
 
+/// Positions relative to node 1 (x_ξ from differences of absolute coordinates loses digits on
+/// short elements far from the axis; Σ h′ over the position functions is 0, Σ h = 1).
 MeridianPoint evaluate(const HermiteBasis& hb, const ShellNodes& x) {
   MeridianPoint q;
+  q.r = x(0, 0);
   for (int j = 0; j < 4; ++j) {
-    const double r = x(hermite_index(j, 0) % 4, hermite_index(j, 0) / 4);
-    const double z = x(hermite_index(j, 1) % 4, hermite_index(j, 1) / 4);
+    const bool slope = j % 2 == 1;
+    const double r = x(hermite_index(j, 0) % 4, hermite_index(j, 0) / 4) - (slope ? 0.0 : x(0, 0));
+    const double z = x(hermite_index(j, 1) % 4, hermite_index(j, 1) / 4) - (slope ? 0.0 : x(1, 0));
     q.r += hb.h[j] * r;
     q.rx += hb.dh[j] * r;
     q.zx += hb.dh[j] * z;
