@@ -60,8 +60,12 @@ void finish_shell_part(const DeckNode& node, const Params& p, Part& part, const 
     } catch (const std::exception& ex) {
       const std::string what = ex.what();
       const bool thick = what.find("thickness") != std::string::npos || what.find("layer") != std::string::npos;
+      if (thick)
+        p.fail("thickness", fmt::format("shell part '{}', element {}: the thickness {:g} does not fit the curvature of "
+                                        "the reference meridian (half of it must stay within every radius of "
+                                        "curvature): {}",
+                                        part.name, e, part.thickness, what));
       const std::string message = fmt::format("shell part '{}', element {}: {}", part.name, e, what);
-      if (thick) p.fail("thickness", message);
       mesh.fail(message);
     }
   }

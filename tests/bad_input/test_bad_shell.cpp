@@ -57,8 +57,8 @@ TEST(BadShell, TooManyMeridianPoints) {
 
 TEST(BadShell, ThicknessBeyondTheRadiusOfCurvature) {
   expect_error("too-thick", "    thickness: 0.08\n", "    thickness: 1.7\n", "parts.balloon.thickness",
-               "shell part 'balloon', element 1: axisymmetric shell: no layer position (shell folded through its "
-               "thickness)");
+               "shell part 'balloon', element 1: the thickness 1.7 does not fit the curvature of the reference "
+               "meridian");
 }
 
 TEST(BadShell, SlopeDofOnAMembrane) {
