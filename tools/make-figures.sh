@@ -7,7 +7,9 @@
 #    with 10, 20, 40, 80 and 160 elements into results/balloon-sphere-convergence/elements-N,
 #    and plots them against the thin-sphere closed form;
 #  - runs examples/balloon-sphere-3d.yaml (volume control through the pressure maximum)
-#    and examples/aneurysm.yaml, and draws their figures.
+#    and examples/aneurysm.yaml, and draws their figures;
+#  - runs a copy of examples/balloon-angioplasty.yaml with ParaView output switched on
+#    (vtk: true, vtk_segments: 3) into results/angioplasty and draws its figures.
 #   TUNICA=path/to/tunica   use that binary instead of ./build/tunica (no build)
 #   PYTHON=path/to/python3  interpreter with matplotlib and numpy (default: Debian's /usr/bin/python3)
 set -euo pipefail
@@ -42,3 +44,10 @@ done
 
 "$tunica" run examples/aneurysm.yaml -o results/aneurysm -q
 "$python" tools/figures/aneurysm_figures.py results/aneurysm docs/figures
+
+angio="$tmp/balloon-angioplasty.yaml"
+sed 's/^  vtk: false$/  vtk: true\n  vtk_segments: 3/' examples/balloon-angioplasty.yaml >"$angio"
+grep -q "^  vtk: true$" "$angio" || { echo "make-figures: could not switch on vtk output in $angio" >&2; exit 1; }
+rm -rf results/angioplasty
+"$tunica" run "$angio" -o results/angioplasty -q
+"$python" tools/figures/angioplasty_figures.py results/angioplasty docs/figures
