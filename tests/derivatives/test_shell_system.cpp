@@ -14,6 +14,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/shell_decks.hpp"
+#include "../support/system_fd.hpp"
 #include "assembly/system.hpp"
 
 using namespace tunica;
@@ -73,7 +74,7 @@ TEST(ShellSystem, AssembledTangentMatchesFiniteDifferences) {
     const LoadState loads = loads_of(m, 0.004, step);
     Eigen::VectorXd u = deformed(m);
     sys.apply_boundary(loads, u);
-    Eigen::VectorXd R, Rp, Rm;
+    Eigen::VectorXd R;
     SparseMatrix K;
     int active = 0;
     sys.assemble(u, loads, R, &K, nullptr, &active);
@@ -81,20 +82,7 @@ TEST(ShellSystem, AssembledTangentMatchesFiniteDifferences) {
       EXPECT_GT(active, 0) << "the balloon should be in contact";
     }
     const Eigen::MatrixXd Kd(K);
-    double worst = 0;
-    const double h = 1e-7;
-    for (int i = 0; i < m.num_dofs(); ++i) {
-      const int col = sys.equation(i);
-      if (col < 0) continue;
-      Eigen::VectorXd up = u, um = u;
-      up(i) += h;
-      um(i) -= h;
-      sys.assemble(up, loads, Rp, nullptr);
-      sys.assemble(um, loads, Rm, nullptr);
-      const Eigen::VectorXd d = (Rp - Rm) / (2 * h);
-      for (int j = 0; j < m.num_dofs(); ++j)
-        if (const int row = sys.equation(j); row >= 0) worst = std::max(worst, std::abs(d(j) - Kd(row, col)));
-    }
+    const double worst = test::fd_tangent_error(sys, loads, u, Kd, 1e-7);
     const double size = Kd.cwiseAbs().maxCoeff();
     EXPECT_LT(worst, 1e-6 * size) << "step " << step;
     std::printf("step %d (balloon %s, %d contact nodes): FD of the assembled residual vs K: %.2e (max |K| %.2e)\n",
