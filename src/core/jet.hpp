@@ -90,6 +90,21 @@ Jet<N> operator*(const Jet<N>& a, const Jet<N>& b) {
   return r;
 }
 
+template <int N>
+Jet<N> operator*(const Jet<N>& a, double c) {
+  return c * a;
+}
+
+template <int N>
+Jet<N> operator-(const Jet<N>& a, double c) {
+  return a + (-c);
+}
+
+template <int N>
+Jet<N> operator-(const Jet<N>& a) {
+  return (-1.0) * a;
+}
+
 /// 1/a:  φ′ = −1/a²,  φ″ = 2/a³.
 template <int N>
 Jet<N> inverse(const Jet<N>& a) {
@@ -108,6 +123,12 @@ Jet<N> sqrt(const Jet<N>& a) {
 template <int N>
 Jet<N> square(const Jet<N>& a) {
   return chain(a, a.v * a.v, 2.0 * a.v, 2.0);
+}
+
+/// a/b = a · (1/b).
+template <int N>
+Jet<N> operator/(const Jet<N>& a, const Jet<N>& b) {
+  return a * inverse(b);
 }
 
 }  // namespace tunica
