@@ -5,6 +5,7 @@
 
 #include "contact/contact_search.hpp"
 #include "contact/rigid_surface.hpp"
+#include "contact/smooth_chain.hpp"
 
 namespace tunica {
 
@@ -29,6 +30,40 @@ int entry(const SparseMatrix& K, int i, int j) {
   return static_cast<int>(it - inner);
 }
 
+/// The contact element of one slave node of a deformable pair: the slave and up to four master
+/// chain indices (−1: unused), f (10) and K (10×10) in that order (r, z per node), the state.
+struct DeformableContactElement {
+  std::array<int, 4> master{-1, -1, -1, -1};
+  ContactVector10 f = ContactVector10::Zero();
+  ContactMatrix10 K = ContactMatrix10::Zero();
+  ContactPoint point;
+  int segment = -1;
+};
+
+/// Slave x_s against the current master chain of `pair`: the faceted (node to segment / vertex) or
+/// the smooth (Catmull–Rom) surface. Returns whether the node is active (e filled; K only if wanted).
+bool deformable_element(const ContactPair& pair, const Eigen::Vector2d& xs, const Eigen::Matrix2Xd& chain,
+                        double area, bool want_K, DeformableContactElement& e) {
+  const ChainProjection where = project_on_chain(xs, chain, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
+  if (pair.master_surface == ContactPair::MasterSurface::smooth) {
+    const SmoothProjection p = project_on_smooth_chain(xs, chain, where, kMasterEndTolerance);
+    if (!p.found) return false;
+    e.point = smooth_contact(xs, chain, p.segment, p.xi, area, pair.law, e.f, want_K ? &e.K : nullptr);
+    e.master = smooth_window(p.segment, static_cast<int>(chain.cols()));
+    e.segment = p.segment;
+    return e.point.active;
+  }
+  ContactVector6 f;
+  ContactMatrix6 Kc;
+  e.point = chain_contact(xs, chain, where, area, pair.law, f, want_K && where.active(pair.law.offset) ? &Kc : nullptr);
+  if (!e.point.active) return false;
+  e.master = {where.segment, where.segment + 1, -1, -1};
+  e.segment = where.segment;
+  e.f.head<6>() = f;
+  if (want_K) e.K.topLeftCorner<6, 6>() = Kc;
+  return true;
+}
+
 }  // namespace
 
 void ContactAssembly::add_couplings(const Model& m, std::vector<std::vector<int>>& adjacent) {
@@ -39,10 +74,13 @@ void ContactAssembly::add_couplings(const Model& m, std::vector<std::vector<int>
         adjacent[s].push_back(q);
         adjacent[q].push_back(s);
       }
-    for (std::size_t k = 0; k + 1 < pair.master.size(); ++k) {
-      adjacent[pair.master[k]].push_back(pair.master[k + 1]);
-      adjacent[pair.master[k + 1]].push_back(pair.master[k]);
-    }
+    // Master nodes of one contact element: consecutive (faceted), or within a window of four (smooth).
+    const std::size_t reach = pair.master_surface == ContactPair::MasterSurface::smooth ? 3 : 1;
+    for (std::size_t k = 0; k < pair.master.size(); ++k)
+      for (std::size_t d = 1; d <= reach && k + d < pair.master.size(); ++d) {
+        adjacent[pair.master[k]].push_back(pair.master[k + d]);
+        adjacent[pair.master[k + d]].push_back(pair.master[k]);
+      }
   }
 }
 
@@ -120,28 +158,30 @@ void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen
   for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
     const int s = pair.nodes[k];
     const Eigen::Vector2d xs = model_.X[s].head<2>() + u.segment<2>(2 * s);
-    const ChainProjection where = project_on_chain(xs, chain, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
-    if (!where.active(pair.law.offset)) continue;
-    ContactVector6 f;
-    ContactMatrix6 Kc;
-    const ContactPoint cp = chain_contact(xs, chain, where, pair.areas[k], pair.law, f, K ? &Kc : nullptr);
-    if (!cp.active) continue;
+    DeformableContactElement e;
+    if (!deformable_element(pair, xs, chain, pair.areas[k], K != nullptr, e)) continue;
     ++active;
-    // The contact element (slave, P_k, P_{k+1}), DOFs (r, z) per node.
-    const int seg = where.segment;
-    const std::array<int, 3> nodes = {s, pair.master[seg], pair.master[seg + 1]};
-    for (int a = 0; a < 6; ++a) R(2 * nodes[a / 2] + a % 2) += f(a);
-    scale2 += f.squaredNorm();
+    // The contact element (slave, master nodes), DOFs (r, z) per node; −1: a ghost slot (no DOFs).
+    std::array<int, 5> nodes{};
+    nodes[0] = s;
+    for (int j = 1; j < 5; ++j) nodes[j] = e.master[j - 1] < 0 ? -1 : pair.master[e.master[j - 1]];
+    double x2 = xs.squaredNorm();
+    for (int j = 1; j < 5; ++j)
+      if (e.master[j - 1] >= 0) x2 = std::max(x2, chain.col(e.master[j - 1]).squaredNorm());
+    for (int a = 0; a < 10; ++a)
+      if (nodes[a / 2] >= 0) R(2 * nodes[a / 2] + a % 2) += e.f(a);
+    scale2 += e.f.squaredNorm();
     if (!K) continue;
-    // The gap is a difference of the three nodes' coordinates: round-off ~ε_mach max |x|.
-    const double x2 = std::max({xs.squaredNorm(), chain.col(seg).squaredNorm(), chain.col(seg + 1).squaredNorm()});
-    scale2 += Kc.squaredNorm() * x2;
+    // The gap is a difference of the nodes' coordinates: round-off ~ε_mach max |x|.
+    scale2 += e.K.squaredNorm() * x2;
     double* values = K->valuePtr();
-    for (int b = 0; b < 6; ++b) {
+    for (int b = 0; b < 10; ++b) {
+      if (nodes[b / 2] < 0) continue;
       const int j = eq_[2 * nodes[b / 2] + b % 2];
       if (j < 0) continue;
-      for (int a = 0; a < 6; ++a)
-        if (const int pos = entry(*K, eq_[2 * nodes[a / 2] + a % 2], j); pos >= 0) values[pos] += Kc(a, b);
+      for (int a = 0; a < 10; ++a)
+        if (nodes[a / 2] >= 0)
+          if (const int pos = entry(*K, eq_[2 * nodes[a / 2] + a % 2], j); pos >= 0) values[pos] += e.K(a, b);
     }
   }
 }
@@ -163,10 +203,9 @@ std::vector<ContactNodeState> ContactAssembly::states(const Eigen::VectorXd& u, 
     s.node = pair.nodes[k];
     const Eigen::Vector2d xs = model_.X[s.node].head<2>() + u.segment<2>(2 * s.node);
     if (pair.deformable()) {
-      const ChainProjection where = project_on_chain(xs, master, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
-      ContactVector6 f;
-      s.point = chain_contact(xs, master, where, pair.areas[k], pair.law, f, nullptr);
-      if (s.point.active) s.master_segment = where.segment;
+      DeformableContactElement e;
+      if (deformable_element(pair, xs, master, pair.areas[k], false, e)) s.master_segment = e.segment;
+      s.point = e.point;
     } else {
       Eigen::Vector2d f;
       s.point = rigid_contact(model_.rigid_surfaces[pair.rigid], xs, pair.areas[k], pair.law, f, nullptr);

@@ -45,8 +45,9 @@ const ComponentSpec& contact_spec() {
       "itself, the part's meridian or the node set in its order) and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = "
       "(signed distance to the surface) − offset; it is active when g_N < 0. A deformable master's normal is "
       "its direction of travel turned clockwise (a chain running towards +z faces +r): the slave must be on "
-      "that side, or give `master_orientation: reversed` (a slave node behind the master at the reference state is an error). Slave nodes push on the master segment they "
-      "project onto (node to segment, one pass: master nodes may enter the slave). The contact pressure "
+      "that side, or give `master_orientation: reversed` (a slave node behind the master at the reference state is an error). Slave nodes push on the master surface at "
+      "their closest point (one pass: master nodes may enter the slave): by default the C¹ curve through the master's "
+      "nodes (`master_surface: smooth`), or its straight segments (`faceted`). The contact pressure "
       "ε⟨−g_N⟩ is per reference area; the outputs `contact_pressure` divide the normal force ε⟨−g_N⟩ A_s by "
       "the current tributary area.",
       {required(text("slave", "name of an axisymmetric membrane part, or of a node set")),
@@ -58,6 +59,13 @@ const ComponentSpec& contact_spec() {
                                 "`reversed`: the opposite side"),
                            {"as_given", "reversed"}),
                     "as_given"),
+       with_default(one_of(text("master_surface",
+                                "deformable master: `smooth`, the C¹ curve through its nodes (chord-weighted "
+                                "Catmull–Rom; no facet corners, so a flexible slave's contact pressure does not "
+                                "scatter with the penalty on meshes that do not match); `faceted`, its straight "
+                                "segments (node to segment)"),
+                           {"smooth", "faceted"}),
+                    "smooth"),
        required(positive(number("penalty", Dimension::penalty,
                                 "penalty ε: contact pressure per unit penetration (the penetration is p_c/ε)"))),
        with_default(at_least(number("offset", Dimension::length,
@@ -244,6 +252,8 @@ void read_contacts(const DeckNode& deck, Model& m) {
       node.fail("a contact pair needs `rigid: <surface>` (a rigid tool) or `master: <part or node set>` (a deformable "
                 "master)");
     if (rigid) {
+      if (node.has("master_surface"))
+        p.fail("master_surface", "only a deformable `master` has a surface choice (a rigid polyline is its segments)");
       if (node.has("master_orientation"))
         p.fail("master_orientation", "only a deformable `master` has an orientation (a rigid polyline's is its point order)");
       const std::string& r = p.text("rigid");
@@ -253,6 +263,8 @@ void read_contacts(const DeckNode& deck, Model& m) {
       read_rigid_slave(p, c, m);
     } else {
       read_deformable_pair(node, p, c, m);
+      c.master_surface = p.text("master_surface") == "faceted" ? ContactPair::MasterSurface::faceted
+                                                                : ContactPair::MasterSurface::smooth;
     }
     m.contacts.push_back(std::move(c));
   }

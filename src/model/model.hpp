@@ -139,6 +139,9 @@ struct ContactPair {
   /// n = (t_z, −t_r) (contact/contact_search.hpp), i.e. after `master_orientation: reversed`.
   std::vector<int> master;
   std::string master_name;      ///< the part or node set named by `master`
+  /// Deformable master: contact with its chain of straight segments (node to segment,
+  /// contact/axisym_contact.hpp) or with the C¹ curve through its nodes (contact/smooth_chain.hpp).
+  enum class MasterSurface { faceted, smooth } master_surface = MasterSurface::smooth;
   ContactLaw law;
   SourceLocation where;
   bool deformable() const { return rigid < 0; }

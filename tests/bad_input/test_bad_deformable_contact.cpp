@@ -139,6 +139,16 @@ TEST(BadDeformableContact, UnknownOrientation) {
                "contact.press.master_orientation", "backwards");
 }
 
+TEST(BadDeformableContact, MasterSurfaceOfARigidSurface) {
+  expect_error("rigid-master-surface", "rigid: sleeve,", "rigid: sleeve, master_surface: faceted,",
+               "contact.cage.master_surface", "only a deformable `master` has a surface choice");
+}
+
+TEST(BadDeformableContact, UnknownMasterSurface) {
+  expect_error("bad-master-surface", "master_orientation: reversed,",
+               "master_orientation: reversed, master_surface: spline,", "contact.press.master_surface", "spline");
+}
+
 TEST(BadDeformableContact, SlaveBehindTheMaster) {
   // The artery meshed towards +z faces +r: as given, the balloon inside it is behind it.
   expect_error("behind", "master_orientation: reversed,", "master_orientation: as_given,",

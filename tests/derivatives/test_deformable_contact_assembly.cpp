@@ -2,7 +2,8 @@
 // pair, against central differences: a sheet (slave) pressed onto a rotated, kinked
 // membrane chain (master: an ordered node set, reversed), every slave node active —
 // on segments (mid-segment and within 3–4 % of a segment's end) and in the region
-// of a convex corner (node to vertex) — with prescribed DOFs on the master and on
+// of a convex corner (node to vertex) — with the faceted master and with the smooth
+// one (contact/smooth_chain.hpp), with prescribed DOFs on the master and on
 // the slave, and a follower pressure on the slave.
 #include <gtest/gtest.h>
 
@@ -57,7 +58,9 @@ struct Target {
 }  // namespace
 
 TEST(DeformableContactAssembly, TangentMatchesFiniteDifferencesInASlidingShearedState) {
-  const Model m = read_deck_text(kDeck, "fd.yaml");
+ for (const std::string surface : {"faceted", "smooth"}) {
+  SCOPED_TRACE("master_surface: " + surface);
+  const Model m = read_deck_text(replace(kDeck, "offset: 0.02}", "offset: 0.02, master_surface: " + surface + "}"), "fd.yaml");
   ASSERT_EQ(m.contacts.size(), 1u);
   const ContactPair& pair = m.contacts[0];
   ASSERT_EQ(pair.master.size(), 6u);
@@ -150,4 +153,5 @@ TEST(DeformableContactAssembly, TangentMatchesFiniteDifferencesInASlidingSheared
   EXPECT_LT(std::abs(total), 1e-12 * R.cwiseAbs().maxCoeff());
   std::printf("deformable pair: FD of the assembled residual vs K: %.2e (max |K| %.2e); |K − Kᵀ| %.1e; |Σ R_z| %.1e\n",
               worst, size, asym, std::abs(total));
+ }
 }
