@@ -9,7 +9,8 @@ Options (environment): TUNICA (default ./build/tunica), DECK (default
 examples/balloon-angioplasty.yaml), KEEP=DIR keeps the runs in DIR/<label> (default: a
 temporary directory, removed), PLAQUE_ELEMENTS_Z=N remeshes the plaque with N (even)
 elements along z instead of the deck's, moving the plaque_mid node set (z held) to the
-new middle row of nodes.
+new middle row of nodes; BALLOON_ELEMENTS=N remeshes the balloon with N elements from pole
+to pole (the poles node set follows).
 
 Each case is a copy of the deck with only the named values changed (checked), and with
 ParaView output switched on (vtk_segments: 3) so that the contact pressure along the
@@ -141,6 +142,14 @@ def edit(text, what, factor):
         if (mid % ", ".join(map(str, old))) not in out:
             sys.exit("angioplasty_study: plaque_mid is not the middle row of the deck's plaque")
         out = out.replace(mid % ", ".join(map(str, old)), mid % ", ".join(map(str, row)))
+    nb = os.environ.get("BALLOON_ELEMENTS")
+    if nb:
+        m = re.search(r"end_angle: 90 deg, elements: (\d+)\}", out)
+        poles = "balloon_poles: {part: balloon, nodes: [0, %s]}"
+        if not m or (poles % m.group(1)) not in out:
+            sys.exit("angioplasty_study: cannot set the balloon's element count to %s" % nb)
+        out = out.replace(poles % m.group(1), poles % int(nb))
+        out = out.replace(m.group(0), "end_angle: 90 deg, elements: %d}" % int(nb))
     out, nv = re.subn(r"\n  vtk: false\n", "\n  vtk: true\n  vtk_segments: 3\n", out)
     if nv != 1:
         sys.exit("angioplasty_study: could not switch on vtk output")

@@ -44,9 +44,11 @@ struct DeformableContactElement {
 /// the smooth (Catmull–Rom) surface. Returns whether the node is active (e filled; K only if wanted).
 bool deformable_element(const ContactPair& pair, const Eigen::Vector2d& xs, const Eigen::Matrix2Xd& chain,
                         double area, bool want_K, DeformableContactElement& e) {
-  const ChainProjection where = project_on_chain(xs, chain, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
-  if (pair.master_surface == ContactPair::MasterSurface::smooth) {
-    const SmoothProjection p = project_on_smooth_chain(xs, chain, where, kMasterEndTolerance);
+  const bool smooth = pair.master_surface == ContactPair::MasterSurface::smooth;
+  const double tau = smooth ? kSmoothMasterEndTolerance : kMasterEndTolerance;
+  const ChainProjection where = project_on_chain(xs, chain, std::numeric_limits<double>::infinity(), tau);
+  if (smooth) {
+    const SmoothProjection p = project_on_smooth_chain(xs, chain, where, tau);
     if (!p.found) return false;
     e.point = smooth_contact(xs, chain, p.segment, p.xi, area, pair.law, e.f, want_K ? &e.K : nullptr);
     e.master = smooth_window(p.segment, static_cast<int>(chain.cols()));

@@ -10,8 +10,9 @@
 // nodes those are depends on the penalty: the nodal contact pressure scatters,
 // and its maximum does not converge as ε grows. Smoothing the master surface
 // removes the corners (Wriggers, Computational Contact Mechanics, 2nd ed. 2006,
-// §9.4 "smooth contact discretization"; Wriggers, Krstulovic-Opara & Korelc,
-// IJNME 50 (2001) 1085–1113, with Bézier/Hermite interpolation of the master).
+// ch. 9, on smoothing the master surface; Wriggers, Krstulovic-Opara & Korelc,
+// "Smooth C1-interpolations for two-dimensional frictional contact problems",
+// IJNME 2001, with Bézier/Hermite interpolation of the master).
 //
 // Curve. Master chain P_0 … P_{m−1}; segment k (P_k → P_{k+1}, chord length ℓ_k)
 // is the cubic Hermite curve
@@ -31,7 +32,8 @@
 //
 // Contact. Closest point ξ* of the slave x_s: F(ξ) = (x_s − c(ξ))·c′(ξ) = 0,
 // found by Newton from the faceted search (contact_search.hpp), moving to the
-// neighbouring segment when ξ leaves [0, 1]. Normal n = (c′_z, −c′_r)/|c′| (the
+// neighbouring segment when ξ leaves [0, 1] (beyond the chain's ends: no contact,
+// except within kSmoothMasterEndTolerance of the end segment). Normal n = (c′_z, −c′_r)/|c′| (the
 // chain's convention: t turned clockwise), gap g_N = (x_s − c(ξ*))·n − c_offset.
 // Penalty energy Π = ½ ε ⟨−g_N⟩² A_s as for a faceted master; with
 // y = (x_s, P_{k−1}, P_k, P_{k+1}, P_{k+2}) (10 unknowns)
@@ -47,6 +49,13 @@
 #include "contact/contact_search.hpp"
 
 namespace tunica {
+
+/// The end tolerance τ of a smooth master: a slave node whose foot point lies beyond an end of the
+/// chain by at most this fraction of the end segment (on the cubic's continuation) is still in
+/// contact with it. Two bodies ending in one plane z = const (both held there) keep their end nodes
+/// in contact although the master's end tangent tilts as it deforms: a node at distance g from the
+/// master has its foot shifted by g·sin(tilt), far more than round-off.
+constexpr double kSmoothMasterEndTolerance = 0.5;
 
 using ContactVector10 = Eigen::Matrix<double, 10, 1>;
 using ContactMatrix10 = Eigen::Matrix<double, 10, 10>;
