@@ -2,7 +2,7 @@
 // files (every CSV row whole, every VTU/PVD closed, no temporary file), and
 // `tunica run --restart DIR` continues it to the same results as an
 // uninterrupted run, bit for bit in history.csv. SIGTERM stops a run after the
-// current increment with exit code 143.
+// current increment with exit code 143. A model with shell parts restarts too.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "../support/capture.hpp"
+#include "../support/shell_decks.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -139,4 +140,26 @@ TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
   std::ofstream(other) << replace(read_text(example), "elements: 1}", "elements: 3}");
   EXPECT_EQ(run("run " + other + " --restart " + (dir / "done").string()), 2);
   EXPECT_EQ(run("run " + example + " --restart " + (dir / "nothing-here").string()), 2);
+}
+
+// The same for a model with shell parts: the restart file carries the slope unknowns of the
+// Kirchhoff–Love shells, the part that enters in step 2 and the contact between shells, and
+// the continued run reproduces the uninterrupted one bit for bit in history.csv.
+TEST(Restart, AKilledShellRunRestartsToTheUninterruptedResults) {
+  const fs::path dir = scratch("shell");
+  const std::string deck = (dir / "shell.yaml").string();
+  std::ofstream(deck) << replace(kShellArteryBalloon, "{name: inflate, increments: 8,", "{name: inflate, increments: 400,");
+  ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
+  const std::string full = read_text((dir / "full" / "history.csv").string());
+  ASSERT_EQ(std::count(full.begin(), full.end(), '\n'), 1 + 1 + 2 + 400);  // header, reference state, increments
+
+  const int status = start_and_signal(deck, dir / "killed", 120, SIGKILL);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  expect_complete_files(dir / "killed", /*allow_tmp=*/true);
+  const std::string partial = read_text((dir / "killed" / "history.csv").string());
+  EXPECT_LT(std::count(partial.begin(), partial.end(), '\n'), 1 + 1 + 2 + 400);
+  ASSERT_EQ(run("run " + deck + " -q --restart " + (dir / "killed").string()), 0);
+  EXPECT_EQ(read_text((dir / "killed" / "history.csv").string()), full);
+  EXPECT_EQ(rows_without_timing(read_text((dir / "killed" / "newton.csv").string())),
+            rows_without_timing(read_text((dir / "full" / "newton.csv").string())));
 }
