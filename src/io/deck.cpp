@@ -539,6 +539,12 @@ void read_output(const DeckNode& deck, Model& m) {
                                "hydrostatic_pressure, volume_ratio, radius)");
     } else if (q->target == "node_set") {
       r.node_set = node_set_ref(h, "node_set", m);
+      if (r.quantity.find("slope_") != std::string::npos)
+        for (int n : m.node_sets[r.node_set].nodes)
+          if (!m.has_slopes(n))
+            h.fail("node_set", fmt::format("'{}' is a quantity of axisymmetric_shell nodes; node {} of '{}' is on no "
+                                           "shell part",
+                                           r.quantity, n, h.text("node_set")));
     } else if (q->target == "load") {
       const std::string& l = h.text("load");
       auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& x) { return x.name == l; });
@@ -638,6 +644,15 @@ const std::vector<HistoryQuantity>& history_quantities() {
       {"reaction_x", "node_set", Dimension::force, "3-D: reaction force on prescribed x DOFs"},
       {"reaction_y", "node_set", Dimension::force, "3-D: reaction force on prescribed y DOFs"},
       {"reaction_z", "node_set", Dimension::force, "reaction force on prescribed z DOFs (axisymmetric: whole circumference)"},
+      {"slope_r", "node_set", Dimension::dimensionless,
+       "axisymmetric shells: meridian slope r′ = ∂r/∂S of the nodes (S the reference arc length; the r component of "
+       "the unit tangent times the meridional stretch)"},
+      {"slope_z", "node_set", Dimension::dimensionless, "axisymmetric shells: meridian slope z′ = ∂z/∂S of the nodes"},
+      {"reaction_slope_r", "node_set", Dimension::moment,
+       "axisymmetric shells: reaction conjugate to prescribed slope_r DOFs, the clamping moment on the whole "
+       "circumference (a clamped tube end of radius R: 2πR M_s; default reduce: sum)"},
+      {"reaction_slope_z", "node_set", Dimension::moment,
+       "axisymmetric shells: reaction conjugate to prescribed slope_z DOFs (whole circumference; default reduce: sum)"},
       {"contact_pressure", "contact", Dimension::pressure,
        "contact pressure at the slave nodes of a contact pair: normal force ε⟨−g_N⟩ A_s over the current tributary "
        "area (default reduce: max)"},

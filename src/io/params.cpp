@@ -97,6 +97,7 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
                                       : dim == Dimension::pressure ? "61.163 kPa"
                                       : dim == Dimension::force    ? "0.1 N"
                                       : dim == Dimension::penalty  ? "1e4 N/mm^3"
+                                      : dim == Dimension::moment   ? "0.5 N*mm"
                                                                    : "90 deg") +
                         "'), got '" + s + "'");
   }

@@ -62,6 +62,7 @@ const char* dimension_name(Dimension d) {
     case Dimension::angle: return "angle";
     case Dimension::volume: return "volume";
     case Dimension::penalty: return "pressure per length";
+    case Dimension::moment: return "moment (force × length)";
   }
   return "?";
 }
@@ -80,6 +81,7 @@ std::string UnitSystem::internal_unit(Dimension d) const {
     case Dimension::angle: return "rad";
     case Dimension::volume: return "(" + length_ + ")^3";
     case Dimension::penalty: return "(" + force_ + ")/(" + length_ + ")^3";
+    case Dimension::moment: return "(" + force_ + ")*(" + length_ + ")";
   }
   return "1";
 }
@@ -91,6 +93,7 @@ void UnitSystem::check_unit(const std::string& unit, Dimension d) const {
                           : d == Dimension::angle ? "rad"
                           : d == Dimension::volume ? "m^3"
                           : d == Dimension::penalty ? "Pa/m"
+                          : d == Dimension::moment ? "N*m"
                                                   : "1";
   convert(1.0, unit, reference, dimension_name(d));
 }
@@ -112,6 +115,7 @@ std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string&
     u = d == Dimension::pressure ? units.force_unit() + "_per_" + units.length_unit() + "2"
         : d == Dimension::volume ? units.length_unit() + "3"
         : d == Dimension::penalty ? units.force_unit() + "_per_" + units.length_unit() + "3"
+        : d == Dimension::moment ? units.force_unit() + "_" + units.length_unit()
                                  : units.internal_unit(d);
   std::string out;
   for (char c : u) {

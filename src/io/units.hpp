@@ -9,7 +9,7 @@ namespace tunica {
 
 /// The physical dimension a parameter or output quantity carries.
 /// `penalty`: pressure per length (force/length³), the stiffness of a contact penalty law.
-enum class Dimension { dimensionless, length, force, pressure, angle, volume, penalty };
+enum class Dimension { dimensionless, length, force, pressure, angle, volume, penalty, moment };
 
 /// Human name of a dimension ("length", "pressure (stress)", ...).
 const char* dimension_name(Dimension d);

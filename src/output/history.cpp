@@ -77,9 +77,15 @@ double point_value(const MembranePoint& p, const std::string& q) {
   throw std::logic_error("unknown element quantity " + q);
 }
 
-/// Node quantities `<what>_<dof>`: position, displacement, reaction.
+/// Node quantities `<what>_<dof>`: position, displacement, reaction; shell nodes also slope_<r|z>
+/// (x′ = X′ + u′) and reaction_slope_<r|z> (the reaction of a prescribed slope unknown).
 double node_value(const Analysis& a, int node, const std::string& q) {
   const Model& m = a.model();
+  if (const auto s = q.find("slope_"); s != std::string::npos) {
+    const int c = q.back() == 'r' ? 0 : 1;
+    const int d = m.node_dof(node, m.dofs_per_node() + c);
+    return s == 0 ? m.slope_ref[node](c) + a.displacement()(d) : a.reactions()(d);
+  }
   const auto names = m.dof_names();
   const std::string dof = q.substr(q.rfind('_') + 1);
   const int c = static_cast<int>(std::find(names.begin(), names.end(), dof) - names.begin());

@@ -84,3 +84,9 @@ TEST(BadShell, ShellQuantityOfAMembranePart) {
                "{quantity: M_2, part: cuff, reduce: max, name: M_s_max, unit: N}", "output.history[3].quantity",
                "'M_2' is a quantity of axisymmetric_shell parts; part 'cuff' is an axisymmetric_membrane part");
 }
+
+TEST(BadShell, SlopeQuantityOfAMembraneNodeSet) {
+  expect_error("slope-of-membrane", "{quantity: M_2, part: artery, reduce: max, name: M_s_max, unit: N}",
+               "{quantity: reaction_slope_r, node_set: cuff.start, name: M_cuff}", "output.history[3].node_set",
+               "'reaction_slope_r' is a quantity of axisymmetric_shell nodes; node");
+}

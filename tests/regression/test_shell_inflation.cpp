@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 
 #include "../support/capture.hpp"
 #include "../support/shell_decks.hpp"
@@ -131,4 +133,58 @@ TEST(ShellInflation, ShellBalloonInflatesAShellArteryThroughContact) {
   EXPECT_GT(last[Capture::column(m, "pc_MPa")], 0.0);
   EXPECT_GT(last[Capture::column(m, "M_s_max_N")], 0.0);  // the contact bends the artery
   EXPECT_GT(last[Capture::column(m, "balloon_rmax_mm")], 0.9);
+}
+
+// A long thin tube (R = 1, h = 0.02, neo-Hookean μ = 1, so E = 3, ν = ½ in the small-strain
+// limit) clamped at both ends (r, z and slope_r held) under a small pressure p: the linear
+// shell theory of the edge zone (Timoshenko & Woinowsky-Krieger, §114) gives the clamping
+// moment per unit length M₀ = 2β²D w_∞ with D = Eh³/(12(1 − ν²)), β⁴ = 3(1 − ν²)/(R²h²),
+// w_∞ = pR²(1 − ν²)/(Eh) (axially held), i.e. M₀ = pRh/4 for ν = ½: the history quantity
+// reaction_slope_r at an end is 2πR M₀ = πpR²h/2 (whole circumference). Also: slope_r is
+// held at 0 at the clamp and the tube's meridian turns in the edge zone (slope_r ≠ 0 there).
+TEST(ShellInflation, ClampedTubeEndMomentMatchesTheLinearEdgeZone) {
+  const std::string deck = R"(title: clamped shell tube
+units: {length: mm, force: N}
+materials:
+  wall: {type: neo_hookean, mu: 1}
+parts:
+  tube:
+    element: axisymmetric_shell
+    material: wall
+    thickness: 0.02
+    mesh: {type: line, from: [1, 0], to: [1, 2], elements: 100}
+node_sets:
+  ends: {part: tube, nodes: [0, 100]}
+  near_end: {part: tube, nodes: [5]}
+boundary:
+  clamp: {node_set: ends, dofs: [r, z, slope_r]}
+loads:
+  p: {type: pressure, part: tube}
+steps:
+  - {name: load, increments: 1, set: {p: 1e-5}}
+output:
+  vtk: false
+  history:
+    - {quantity: reaction_slope_r, node_set: tube.start, name: M_start}
+    - {quantity: reaction_slope_r, node_set: ends, name: M_ends}
+    - {quantity: slope_r, node_set: tube.start, name: slope_start}
+    - {quantity: slope_r, node_set: near_end, name: slope_near}
+    - {quantity: radius, part: tube, reduce: max, name: r_max}
+)";
+  const ShellRun r = run(deck, "clamped-tube.yaml");
+  const auto& last = r.capture.rows.back().values;
+  const double p = 1e-5, R = 1, h = 0.02, E = 3, nu = 0.5;
+  const double closed = std::numbers::pi * p * R * R * h / 2;
+  const double M = last[Capture::column(r.model, "M_start_N_mm")];
+  const double w_inf = p * R * R * (1 - nu * nu) / (E * h);
+  std::printf("clamped tube: reaction_slope_r %.5e N mm, linear edge zone pi p R^2 h / 2 = %.5e (%+.2f %%); "
+              "r_max - R = %.4e (w_inf %.4e); slope_r near the end %.3e\n",
+              M, closed, 100 * (std::abs(M) / closed - 1), last[Capture::column(r.model, "r_max_mm")] - R, w_inf,
+              last[Capture::column(r.model, "slope_near")]);
+  EXPECT_NEAR(std::abs(M) / closed, 1.0, 0.05);
+  EXPECT_NEAR(last[Capture::column(r.model, "M_ends_N_mm")], 0.0, 1e-9 * closed) << "the two ends' moments cancel";
+  EXPECT_EQ(last[Capture::column(r.model, "slope_start")], 0.0);
+  EXPECT_GT(std::abs(last[Capture::column(r.model, "slope_near")]), 0.1 * w_inf * std::sqrt(75.0));
+  // The overshoot of the edge zone: r_max − R = w_∞ (1 + e^{−π}) at βx = π.
+  EXPECT_NEAR((last[Capture::column(r.model, "r_max_mm")] - R) / (w_inf * (1 + std::exp(-std::numbers::pi))), 1.0, 0.05);
 }
