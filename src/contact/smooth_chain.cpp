@@ -91,7 +91,9 @@ SmoothProjection project_on_smooth_chain(const Eigen::Vector2d& x, const Eigen::
   int switches = 0;
   bool converged = false;
   // Newton on F(ξ) = (x − c)·c′ (F′ = −c′·c′ + (x − c)·c″; where that is not negative, the
-  // Gauss–Newton −c′·c′), steps capped at half a segment, hopping to a neighbour when ξ leaves [0, 1].
+  // Gauss–Newton −c′·c′, a descent step), steps capped at half a segment, hopping to a neighbour
+  // when ξ leaves [0, 1] by more than round-off. Converged when the step moves the foot by less
+  // than 1e-13 of the coordinates' size (round-off in ξ is ~1e-16 |x|/ℓ).
   for (int it = 0; it < 60 && !converged; ++it) {
     const Curve<double> c = curve(chain, k, xi);
     const double r0 = x(0) - c.c[0], r1 = x(1) - c.c[1];
@@ -102,31 +104,40 @@ SmoothProjection project_on_smooth_chain(const Eigen::Vector2d& x, const Eigen::
     if (!(Fp < 0)) throw std::domain_error("contact: smooth master curve with a zero tangent");
     const double step = std::max(-0.5, std::min(0.5, -F / Fp));
     xi += step;
-    converged = std::abs(step) < 1e-14;
-    if (xi > 1 && k < m - 2 && switches < 8) {
+    const double size = x.norm() + std::hypot(c.c[0], c.c[1]);
+    converged = std::abs(step) * std::sqrt(dd) <= 1e-13 * size;
+    constexpr double kHop = 1e-12;  // beyond [0, 1] by more than round-off
+    if (xi > 1 + kHop && k < m - 2 && switches < 8) {
       ++k;
       xi -= 1;
       ++switches;
       converged = false;
-    } else if (xi < 0 && k > 0 && switches < 8) {
+    } else if (xi < -kHop && k > 0 && switches < 8) {
       --k;
       xi += 1;
       ++switches;
       converged = false;
     }
   }
-  // Beyond an end of the chain: no side there (the faceted rule, with its tolerance).
-  if ((k == 0 && xi < -end_tolerance) || (k == m - 2 && xi > 1 + end_tolerance)) return p;
-  // Two segments sending the point to each other: the foot is their shared node.
-  if (!converged) xi = std::max(0.0, std::min(1.0, xi));
   const Curve<double> c = curve(chain, k, xi);
   const double l = std::hypot(c.d[0], c.d[1]);
   if (!(l > 0)) throw std::domain_error("contact: smooth master curve with a zero tangent");
+  const Eigen::Vector2d normal(c.d[1] / l, -c.d[0] / l);
+  const double s = (x - Eigen::Vector2d(c.c[0], c.c[1])).dot(normal);
+  // Beyond an end of the chain: no side there, except within the end tolerance τ (of the end
+  // segment, measured on the cubic's continuation) when the foot's shift along the tangent is at
+  // most half the distance |s| (the end tangent tilted by up to ~27°) and the node is not more
+  // than τ end segments behind the surface itself (s ≥ −τℓ, whatever the offset).
+  const double beyond = k == 0 && xi < 0 ? -xi : k == m - 2 && xi > 1 ? xi - 1 : 0.0;
+  if (beyond > 0) {
+    const double shift = beyond * l;
+    if (beyond > end_tolerance || shift > 0.5 * std::abs(s) || s < -end_tolerance * l) return p;
+  }
   p.found = true;
   p.segment = k;
   p.xi = xi;
-  p.normal = Eigen::Vector2d(c.d[1], -c.d[0]) / l;
-  p.signed_distance = (x - Eigen::Vector2d(c.c[0], c.c[1])).dot(p.normal);
+  p.normal = normal;
+  p.signed_distance = s;
   return p;
 }
 
@@ -142,10 +153,8 @@ ContactPoint smooth_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Ei
   p.xi = xi;
   p.normal = Eigen::Vector2d(c0.d[1], -c0.d[0]) / l0;
   p.gap = (xs - Eigen::Vector2d(c0.c[0], c0.c[1])).dot(p.normal) - law.offset;
-  p.active = p.gap < 0;
-  if (!p.active) return p;
-  p.pressure = -law.penalty * p.gap;
-  p.energy = 0.5 * law.penalty * p.gap * p.gap * area;
+  // Open at ξ (the common case): no jets. Else the state is taken from the jet below.
+  if (!(p.gap < 0)) return p;
 
   // Independent variables y = (x_s, window slots 0–3); a ghost slot's variables stay unused.
   double Qv[4][2];
@@ -155,9 +164,11 @@ ContactPoint smooth_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Ei
   for (int j = 0; j < 4; ++j)
     for (int a = 0; a < 2; ++a) Q[j][a] = J::variable(Qv[j][a], 2 + 2 * j + a);
   const bool g0 = w[0] < 0, g3 = w[3] < 0;
-  // Two Newton steps of F = (x − c)·c′ = 0 in jet arithmetic from the converged ξ*.
+  // One Newton step of F = (x − c)·c′ = 0 in jet arithmetic from the converged ξ*: it gives ξ*'s
+  // value and gradient exactly, which is all the Hessian of g_N needs, since ∂g_N/∂ξ = 0 at the
+  // foot point (x − c ∥ n ⊥ n′). (A second step, exact to the Hessian of ξ*, changes nothing.)
   J s = J::constant(xi);
-  for (int step = 0; step < 2; ++step) {
+  {
     const Curve<J> c = eval_curve(s, Q, g0, g3);
     const J r0 = x[0] - c.c[0], r1 = x[1] - c.c[1];
     const J F = r0 * c.d[0] + r1 * c.d[1];
@@ -168,6 +179,14 @@ ContactPoint smooth_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Ei
   // g_N = (x − c)·n − offset, n = (c′_z, −c′_r)/|c′|.
   const J g = ((x[0] - c.c[0]) * c.d[1] - (x[1] - c.c[1]) * c.d[0]) / sqrt(c.d[0] * c.d[0] + c.d[1] * c.d[1]) -
               law.offset;
+  // State, force and tangent all from this g_N, so the energy and its derivatives agree even if
+  // the given ξ was not converged to the last bit.
+  p.gap = g.v;
+  p.active = g.v < 0;
+  p.normal = Eigen::Vector2d(c.d[1].v, -c.d[0].v).normalized();
+  if (!p.active) return p;
+  p.pressure = -law.penalty * g.v;
+  p.energy = 0.5 * law.penalty * g.v * g.v * area;
   const double eA = law.penalty * area;
   f = eA * g.v * g.g;
   if (K) *K = eA * (g.g * g.g.transpose() + g.v * g.h);

@@ -52,9 +52,10 @@ namespace tunica {
 
 /// The end tolerance τ of a smooth master: a slave node whose foot point lies beyond an end of the
 /// chain by at most this fraction of the end segment (on the cubic's continuation) is still in
-/// contact with it. Two bodies ending in one plane z = const (both held there) keep their end nodes
-/// in contact although the master's end tangent tilts as it deforms: a node at distance g from the
-/// master has its foot shifted by g·sin(tilt), far more than round-off.
+/// contact with it, if that shift is at most half its distance and it is not more than τ end
+/// segments behind the surface (project_on_smooth_chain). Two bodies ending in one plane z = const (both held there)
+/// keep their end nodes in contact although the master's end tangent tilts as it deforms: a node
+/// at distance s from the master has its foot shifted by s·sin(tilt), far more than round-off.
 constexpr double kSmoothMasterEndTolerance = 0.5;
 
 using ContactVector10 = Eigen::Matrix<double, 10, 1>;
@@ -77,7 +78,10 @@ struct SmoothProjection {
 Eigen::Vector2d smooth_point(const Eigen::Ref<const Eigen::Matrix2Xd>& chain, int k, double xi);
 
 /// Closest point of x on the smooth curve through `chain`, starting from the faceted search's
-/// result `start` (project_on_chain). `end_tolerance` as for the faceted chain.
+/// result `start` (project_on_chain, called with the same end tolerance). Beyond an end of the
+/// chain the point is not found unless its foot lies within `end_tolerance` (fraction of the end
+/// segment) of the end, shifted along the tangent by at most half its distance |s|, and the
+/// point is at most `end_tolerance` end segments behind the surface (s ≥ −τℓ).
 SmoothProjection project_on_smooth_chain(const Eigen::Vector2d& x, const Eigen::Ref<const Eigen::Matrix2Xd>& chain,
                                          const ChainProjection& start, double end_tolerance);
 

@@ -6,10 +6,16 @@
 //  - the curve through the nodes, with a continuous normal at every node (along the
 //    chord of its neighbours);
 //  - a straight chain with uneven node spacing is its straight line (a flat
-//    master keeps the faceted gap and normal: the contact patch test).
+//    master keeps the faceted gap and normal: the contact patch test);
+//  - the chain's ends: the end tangent along the end chord; f and K by finite
+//    differences for slaves whose foot lies beyond an end (within the end
+//    tolerance), on a chain far from the origin (|x| ≈ 300 segment lengths, where
+//    an absolute stopping test of the projection would sit below round-off); a
+//    slave beyond an end and deep behind the surface is not in contact.
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -46,11 +52,11 @@ struct Evaluation {
   int segment = -1;
 };
 
-Evaluation evaluate(const Eigen::VectorXd& v, int m, const ContactLaw& law, double area) {
+Evaluation evaluate(const Eigen::VectorXd& v, int m, const ContactLaw& law, double area, double tau = 0.0) {
   const Eigen::Vector2d xs = v.head<2>();
   const Eigen::Matrix2Xd chain = Eigen::Map<const Eigen::Matrix2Xd>(v.data() + 2, 2, m);
-  const ChainProjection start = project_on_chain(xs, chain);
-  const SmoothProjection p = project_on_smooth_chain(xs, chain, start, 0.0);
+  const ChainProjection start = project_on_chain(xs, chain, std::numeric_limits<double>::infinity(), tau);
+  const SmoothProjection p = project_on_smooth_chain(xs, chain, start, tau);
   Evaluation e;
   e.f = Eigen::VectorXd::Zero(v.size());
   e.K = Eigen::MatrixXd::Zero(v.size(), v.size());
@@ -147,5 +153,77 @@ TEST(SmoothContact, AStraightChainIsItsLineWhateverTheSpacing) {
     double master_z = 0;
     for (int a = 2; a < 10; a += 2) master_z += f(a + 1);
     EXPECT_NEAR(master_z, 500 * 0.003 * 0.1, 1e-13);
+  }
+}
+
+TEST(SmoothContact, TheEndTangentIsAlongTheEndChord) {
+  std::mt19937 rng(9);
+  const Eigen::Matrix2Xd chain = random_chain(rng, 5);
+  const double h = 1e-7;
+  const Eigen::Vector2d first = (smooth_point(chain, 0, h) - smooth_point(chain, 0, 0.0)) / h;
+  const Eigen::Vector2d last = (smooth_point(chain, 3, 1.0) - smooth_point(chain, 3, 1.0 - h)) / h;
+  EXPECT_LT((first.normalized() - (chain.col(1) - chain.col(0)).normalized()).norm(), 1e-6);
+  EXPECT_LT((last.normalized() - (chain.col(4) - chain.col(3)).normalized()).norm(), 1e-6);
+}
+
+TEST(SmoothContact, BeyondTheEndsForceAndTangentMatchFiniteDifferencesFarFromTheOrigin) {
+  std::mt19937 rng(10);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double area = 0.05, tau = kSmoothMasterEndTolerance;
+  double worst_f = 0, worst_K = 0;
+  int n = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    // Far from the origin: shift the chain by (75, −40) (segments ≈ 0.25: |x|/ℓ ≈ 300).
+    Eigen::Matrix2Xd chain = random_chain(rng, 6);
+    chain.row(0).array() += 75.0;
+    chain.row(1).array() -= 40.0;
+    const int m = 6;
+    const bool at_start = trial % 2 == 0;
+    const int k = at_start ? 0 : m - 2;
+    // The end tangent and normal; the slave beyond the end by 5–15 % of the end segment, at a
+    // distance of offset − depth with an offset of half the end segment.
+    const Eigen::Vector2d end = at_start ? chain.col(0) : chain.col(m - 1);
+    const Eigen::Vector2d t = (at_start ? chain.col(1) - chain.col(0) : chain.col(m - 1) - chain.col(m - 2));
+    const double l = t.norm();
+    const Eigen::Vector2d tn = t / l, normal(tn(1), -tn(0));
+    const double beyond = (0.05 + 0.1 * u(rng)) * l, offset = 0.5 * l, depth = 0.002 + 0.02 * u(rng) * l;
+    const Eigen::Vector2d xs = end + (at_start ? -beyond : beyond) * tn + (offset - depth) * normal;
+    const ContactLaw law{.penalty = 1e3, .offset = offset};
+    Eigen::VectorXd v(2 + 2 * m);
+    v << xs, Eigen::Map<const Eigen::VectorXd>(chain.data(), 2 * m);
+    const Evaluation e = evaluate(v, m, law, area, tau);
+    ASSERT_TRUE(e.point.active) << "trial " << trial;
+    ASSERT_EQ(e.segment, k) << "trial " << trial;
+    EXPECT_TRUE(at_start ? e.point.xi < 0 : e.point.xi > 1) << "the foot lies beyond the end, xi " << e.point.xi;
+    // The cubic's continuation bends away from the end tangent's line: about the depth built.
+    EXPECT_NEAR(e.point.gap, -depth, 0.01 * l);
+    const auto energy = [&](const Eigen::VectorXd& y) { return evaluate(y, m, law, area, tau).point.energy; };
+    const auto force = [&](const Eigen::VectorXd& y) -> Eigen::VectorXd { return evaluate(y, m, law, area, tau).f; };
+    const double ef = relative_error(e.f, fd_gradient(energy, v, 1e-6));
+    const double eK = relative_error(e.K, fd_jacobian(force, v, 1e-6));
+    EXPECT_LT(ef, 1e-6) << "trial " << trial;
+    EXPECT_LT(eK, 1e-5) << "trial " << trial;
+    worst_f = std::max(worst_f, ef);
+    worst_K = std::max(worst_K, eK);
+    ++n;
+  }
+  std::printf("smooth master beyond the ends, |x| ~ 300 segments (%d states): largest FD error force %.2e, tangent %.2e\n",
+              n, worst_f, worst_K);
+}
+
+TEST(SmoothContact, BeyondAnEndAndDeepBehindTheSurfaceIsNoContact) {
+  // A flat master along r (normal +z) ending at r = 1, segments 0.25; a slave just beyond the end.
+  Eigen::Matrix2Xd chain(2, 4);
+  chain << 1.75, 1.5, 1.25, 1.0, 0, 0, 0, 0;
+  const double tau = kSmoothMasterEndTolerance;
+  for (const auto& [x, contact] : std::vector<std::pair<Eigen::Vector2d, bool>>{
+           {Eigen::Vector2d(0.95, -1.0), false},   // 4 segments behind: no surface there
+           {Eigen::Vector2d(0.995, -0.02), true},  // just behind, shifted by less than half its distance
+           {Eigen::Vector2d(0.95, -0.01), false},  // shifted by more than half its distance
+           {Eigen::Vector2d(0.80, -0.01), false},  // beyond by more than half its distance
+       }) {
+    const SmoothProjection p =
+        project_on_smooth_chain(x, chain, project_on_chain(x, chain, std::numeric_limits<double>::infinity(), tau), tau);
+    EXPECT_EQ(p.found && p.signed_distance < 0, contact) << "slave at (" << x(0) << ", " << x(1) << ")";
   }
 }
