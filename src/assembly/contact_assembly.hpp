@@ -6,18 +6,21 @@
 // Rigid pair: the slave node's force f (2) and 2×2 tangent (rigid_surface.hpp),
 // on the slave's DOFs only — entries the element pattern already holds.
 //
-// Deformable pair: the nearest feature of the current master chain
-// (project_on_chain, contact_search.hpp) makes a 3-node contact element
+// Deformable pair, faceted master: the nearest feature of the current master
+// chain (project_on_chain, contact_search.hpp) makes a 3-node contact element
 // (slave, P_k, P_{k+1}); chain_contact (axisym_contact.hpp: node to segment,
 // f = ε A_s g_N N, K = ε A_s [N⊗N − (g_N/ℓ)(T⊗D + D⊗T) − (g_N g/ℓ²) D⊗D]; node
-// to vertex in a corner region) gives f (6) and K (6×6), scattered over the
-// three nodes' free DOFs (prescribed DOFs: R gets every row, as the reactions;
-// K only free rows and columns, as for the elements).
+// to vertex in a corner region) gives f (6) and K (6×6). Smooth master
+// (default): the closest point on the Catmull–Rom curve (smooth_chain.hpp)
+// makes a 5-node element (slave, P_{k−1} … P_{k+2}; ghost slots at the chain's
+// ends have no DOFs) with f (10) and K (10×10). Either is scattered over the
+// nodes' free DOFs (prescribed DOFs: R gets every row, as the reactions; K
+// only free rows and columns, as for the elements).
 //
 // Sparsity: the pattern is fixed at set-up but the segment a slave node touches
 // changes as it slides, so the pattern couples every slave node with every
-// master node of the pair (S×M 2×2 blocks, both ways) and consecutive master
-// nodes. Cost: 8 S·M extra nonzeros (e.g. 100 balloon nodes against 500
+// master node of the pair (S×M 2×2 blocks, both ways) and master nodes up to
+// one (faceted) or three (smooth) apart. Cost: 8 S·M extra nonzeros (e.g. 100 balloon nodes against 500
 // plaque nodes: 4·10⁵ entries, 3 MB, and the fill of a dense S×M coupling in
 // the factorization) — meant for axisymmetric models of ≤ 10³ contact nodes.
 #include <Eigen/Dense>
