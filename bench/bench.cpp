@@ -39,6 +39,7 @@
 #include "io/deck.hpp"
 #include "solver/analysis.hpp"
 #include "solver/linear_solver.hpp"
+#include "../tests/support/sphere_octant.hpp"
 
 namespace {
 
@@ -99,34 +100,9 @@ output: {{vtk: false}}
                      around, 2 * std::numbers::pi * 0.763, solver_block(o), incs, 0.3 * 2 * std::numbers::pi * 0.763);
 }
 
-double sphere_pressure() {  // THEORY §7: p = 2 μ (H/R)(λ⁻¹ − λ⁻⁷), μ = 1 MPa, H/R = 0.01, λ = 1.2
-  const double l = 1.2;
-  return 2.0 * 1.0 * 0.01 * (1.0 / l - std::pow(l, -7));
-}
-
 std::string sphere_deck(const Options& o) {
-  const int incs = o.increments > 0 ? o.increments : 10;
-  return fmt::format(R"(title: bench neo-Hookean sphere octant n = {0}
-units: {{length: mm, force: N}}
-materials:
-  rubber: {{type: neo_hookean, mu: 1 MPa}}
-parts:
-  balloon:
-    element: membrane
-    material: rubber
-    thickness: 0.01 mm
-    mesh: {{type: octant, radius: 1 mm, n: {0}}}
-boundary:
-  sym_x: {{node_set: balloon.x0, dofs: [x]}}
-  sym_y: {{node_set: balloon.y0, dofs: [y]}}
-  sym_z: {{node_set: balloon.z0, dofs: [z]}}
-loads:
-  inflation: {{type: pressure, part: balloon}}
-{1}steps:
-  - {{name: inflate, increments: {2}, set: {{inflation: {3:.17g}}}}}
-output: {{vtk: false}}
-)",
-                     o.n, solver_block(o), incs, sphere_pressure());
+  return tunica::test::sphere_octant_deck(fmt::format("bench neo-Hookean sphere octant n = {}", o.n), o.n,
+                                          solver_block(o), o.increments > 0 ? o.increments : 10);
 }
 
 /// Collects the Newton records of the run.
@@ -231,7 +207,7 @@ int run(const Options& o) {
     for (int n = 0; n < model.num_nodes(); ++n) r += (model.X[n] + analysis.displacement().segment<3>(3 * n)).norm();
     const double l = r / model.num_nodes();
     const double p_closed = 2.0 * 0.01 * (1.0 / l - std::pow(l, -7));
-    accuracy = fmt::format("{:+.3e}", sphere_pressure() / p_closed - 1.0);
+    accuracy = fmt::format("{:+.3e}", tunica::test::sphere_octant_pressure() / p_closed - 1.0);
   } else {
     // Mean nodal radius against the thin-tube closed form (THEORY §5) at 120 mmHg and λz = 1.3:
     // the error of the hoop stretch λθ = r/R reached.

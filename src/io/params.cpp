@@ -130,10 +130,10 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
       continue;  // read by the section itself
     }
     const DeckNode given = node[p.name];
-    const bool missing = !given.yaml().IsDefined() || given.yaml().IsNull();
     // A key written without a value is an error, required or not: the sections test for a key's
     // presence (node.has) and would otherwise find it present but unread.
     if (given.yaml().IsDefined() && given.yaml().IsNull()) given.fail("key '" + p.name + "' has no value");
+    const bool missing = !given.yaml().IsDefined();
     if (missing) {
       if (p.required) {
         SourceLocation w = node.where();

@@ -167,10 +167,9 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     previous_residual = r0;
     first = 1;
   }
-  double slope0 = 0;  // Δu·R(u) of the last full correction (line search)
+  double slope0 = 0;  // Δu·R(u) of the correction Δu being tried (line search; halved with it)
   if (first == 1) slope0 = -e1;  // the predictor's Δu·(R_f + K_fp Δu_p) = −|…|
   for (int k = first;; ++k) {
-    double taken = 1.0;  // the fraction of the correction kept by the line search
     IterationRecord rec;
     rec.iteration = k;
     double scale = 0;
@@ -193,7 +192,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       // point along Δu). From a stress-free membrane the first correction often raises ‖R‖ while
       // leaving a small slope; halving it only wastes iterations (sphere octant n = 41: 7 → 6).
       const bool slope_ok = inadmissible.empty() && std::isfinite(rec.residual) && k > 0 && slope0 != 0 &&
-                            std::abs(du.head(nf).dot(Rf)) <= 0.5 * std::abs(slope0 * taken);
+                            std::abs(du.head(nf).dot(Rf)) <= 0.5 * std::abs(slope0);
       const bool worse = !inadmissible.empty() || !std::isfinite(rec.residual) ||
                          (rec.residual > previous_residual && !slope_ok);
       if (k == 0 || !worse || constraint || !settings.line_search || rec.backtracks == kMaxBacktracks) break;
@@ -201,7 +200,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       for (int i = 0; i < system.num_dofs(); ++i)
         if (system.equation(i) >= 0) u(i) -= 0.5 * du(system.equation(i));  // back to half the correction taken so far
       du *= 0.5;  // the correction actually taken
-      taken *= 0.5;
+      slope0 *= 0.5;  // Δu·R(u) along it
     }
     if (!inadmissible.empty()) {
       result.failure = inadmissible;

@@ -19,28 +19,19 @@ namespace {
 
 const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
 
+const std::string kScratch = "tunica-bad-input";
 
 std::string write_deck(const std::string& name, const std::string& text) {
-  return write_deck_file("tunica-bad-input", name, text);
+  return write_deck_file(kScratch, name, text);
 }
 
 /// Replaces `from` by `to` in the example, checks the deck and expects exit 2 and a
 /// message "<file>:<line>:...key '<key>': ...<what>...".
 void expect_error(const std::string& name, const std::string& from, const std::string& to, const std::string& key,
                   const std::string& what, const std::string& line_text = "") {
-  const std::string text = replace(read_text(kExample), from, to);
-  const std::string path = write_deck(name, text);
-  const Outcome o = run_cli("check " + path);
-  EXPECT_EQ(o.exit_code, 2) << o.output;
-  const int line = line_of(text, line_text.empty() ? to : line_text);
-  EXPECT_NE(o.output.find(path + ":" + std::to_string(line) + ":"), std::string::npos)
-      << "expected line " << line << " in: " << o.output;
-  if (!key.empty()) {
-    EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
-  }
-  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
+  const Outcome o = expect_check_error(kScratch, name, replace(read_text(kExample), from, to),
+                                       line_text.empty() ? to : line_text, key, what);
   EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
-  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -28,24 +27,17 @@ std::string deck_with_material(const std::string& body) {
   return text.substr(0, begin) + body + "\n" + text.substr(end);
 }
 
+const std::string kScratch = "tunica-bad-materials-" + std::to_string(getpid());
+
 std::string write_deck(const std::string& name, const std::string& text) {
-  return write_deck_file("tunica-bad-materials-" + std::to_string(getpid()), name, text);
+  return write_deck_file(kScratch, name, text);
 }
 
 /// Checks the deck with material `body`; expects exit 2 and "<file>:<line of line_text>:...key '<key>'...<what>".
 void expect_error(const std::string& name, const std::string& body, const std::string& line_text,
                   const std::string& key, const std::string& what) {
-  const std::string text = deck_with_material(body);
-  const std::string path = write_deck(name, text);
-  const Outcome o = run_cli("check " + path);
-  EXPECT_EQ(o.exit_code, 2) << o.output;
-  const int line = line_of(text, line_text);
-  EXPECT_NE(o.output.find(path + ":" + std::to_string(line) + ":"), std::string::npos)
-      << "expected line " << line << " in: " << o.output;
-  EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
+  const Outcome o = expect_check_error(kScratch, name, deck_with_material(body), line_text, key, what);
   EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
-  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
 }
 
 const std::string kHgo =

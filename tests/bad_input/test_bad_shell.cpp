@@ -3,8 +3,6 @@
 // base deck is tests/support/shell_decks.hpp.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
 #include "../support/deck_files.hpp"
@@ -14,23 +12,16 @@ using namespace tunica::test;
 
 namespace {
 
+const std::string kScratch = "tunica-bad-shell";
+
 std::string write_deck(const std::string& name, const std::string& text) {
-  return write_deck_file("tunica-bad-shell", name, text);
+  return write_deck_file(kScratch, name, text);
 }
 
 /// Replaces `from` by `to` in the base deck; the error must be on the line holding `at` (default `to`).
 void expect_error(const std::string& name, const std::string& from, const std::string& to, const std::string& key,
                   const std::string& what, const std::string& at = "") {
-  const std::string text = replace(kShellArteryBalloon, from, to);
-  const std::string path = write_deck(name, text);
-  const Outcome o = run_cli("check " + path);
-  EXPECT_EQ(o.exit_code, 2) << o.output;
-  const int line = line_of(text, at.empty() ? to : at);
-  EXPECT_NE(o.output.find(path + ":" + std::to_string(line) + ":"), std::string::npos)
-      << "expected line " << line << " in: " << o.output;
-  EXPECT_NE(o.output.find("key '" + key + "'"), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find(what), std::string::npos) << o.output;
-  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line of message: " << o.output;
+  expect_check_error(kScratch, name, replace(kShellArteryBalloon, from, to), at.empty() ? to : at, key, what);
 }
 
 }  // namespace

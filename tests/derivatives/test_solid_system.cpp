@@ -12,6 +12,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/solid_decks.hpp"
+#include "../support/system_fd.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -61,24 +62,11 @@ TEST(SolidSystem, AssembledTangentMatchesFiniteDifferences) {
     if (step == 0)  // a held DOF is at 0 in a run; here it is not, to test R_i = k_i u_i too
       for (int n : m.parts[1].nodes) u(2 * n) *= 0.1;
     sys.apply_boundary(loads, u);
-    Eigen::VectorXd R, Rp, Rm;
+    Eigen::VectorXd R;
     SparseMatrix K;
     sys.assemble(u, loads, R, &K);
     const Eigen::MatrixXd Kd(K);
-    double worst = 0;
-    const double h = 1e-7;
-    for (int i = 0; i < m.num_dofs(); ++i) {
-      const int col = sys.equation(i);
-      if (col < 0) continue;
-      Eigen::VectorXd up = u, um = u;
-      up(i) += h;
-      um(i) -= h;
-      sys.assemble(up, loads, Rp, nullptr);
-      sys.assemble(um, loads, Rm, nullptr);
-      const Eigen::VectorXd d = (Rp - Rm) / (2 * h);
-      for (int j = 0; j < m.num_dofs(); ++j)
-        if (const int row = sys.equation(j); row >= 0) worst = std::max(worst, std::abs(d(j) - Kd(row, col)));
-    }
+    const double worst = fd_tangent_error(sys, loads, u, Kd, 1e-7);
     const double size = Kd.cwiseAbs().maxCoeff();
     EXPECT_LT(worst, 1e-6 * size) << "step " << step;
     std::printf("step %d (plaque %s): FD of the assembled residual vs K: %.2e (max |K| %.2e)\n", step,

@@ -8,9 +8,8 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-
 #include "../support/capture.hpp"
+#include "../support/sphere_octant.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -24,30 +23,9 @@ struct SphereRun {
 };
 
 SphereRun run_sphere(bool line_search) {
-  const double l = 1.2;
-  const double p = 2.0 * 1.0 * 0.01 * (1.0 / l - std::pow(l, -7));  // THEORY §7, μ = 1 MPa, H/R = 0.01
-  const std::string deck = fmt::format(R"(title: sphere octant from rest in one increment
-units: {{length: mm, force: N}}
-materials:
-  rubber: {{type: neo_hookean, mu: 1 MPa}}
-parts:
-  balloon:
-    element: membrane
-    material: rubber
-    thickness: 0.01 mm
-    mesh: {{type: octant, radius: 1 mm, n: 16}}
-boundary:
-  sym_x: {{node_set: balloon.x0, dofs: [x]}}
-  sym_y: {{node_set: balloon.y0, dofs: [y]}}
-  sym_z: {{node_set: balloon.z0, dofs: [z]}}
-loads:
-  inflation: {{type: pressure, part: balloon}}
-solver: {{line_search: {}}}
-steps:
-  - {{name: inflate, increments: 1, set: {{inflation: {:.17g}}}}}
-output: {{vtk: false}}
-)",
-                                       line_search ? "true" : "false", p);
+  const std::string deck =
+      sphere_octant_deck("sphere octant from rest in one increment", 16,
+                         fmt::format("solver: {{line_search: {}}}\n", line_search ? "true" : "false"), 1);
   const Model model = read_deck_text(deck, "line-search-sphere.yaml");
   SphereRun r;
   Analysis a(model);

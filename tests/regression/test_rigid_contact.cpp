@@ -15,6 +15,7 @@
 #include <numbers>
 
 #include "../support/capture.hpp"
+#include "../support/system_fd.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -214,26 +215,13 @@ TEST(RigidContactDeck, AssembledTangentWithContactMatchesFiniteDifferences) {
       u(2 * n + 1) = tube ? 1e-3 * std::cos(n) : -1e-6 * (1 + n % 2);
     }
     sys.apply_boundary(loads, u);
-    Eigen::VectorXd R, Rp, Rm;
+    Eigen::VectorXd R;
     SparseMatrix K;
     int active = 0;
     sys.assemble(u, loads, R, &K, nullptr, &active);
     EXPECT_EQ(active, m.num_nodes());
     const Eigen::MatrixXd Kd(K);
-    double worst = 0;
-    const double h = 1e-7;
-    for (int i = 0; i < m.num_dofs(); ++i) {
-      const int col = sys.equation(i);
-      if (col < 0) continue;
-      Eigen::VectorXd up = u, um = u;
-      up(i) += h;
-      um(i) -= h;
-      sys.assemble(up, loads, Rp, nullptr);
-      sys.assemble(um, loads, Rm, nullptr);
-      const Eigen::VectorXd d = (Rp - Rm) / (2 * h);
-      for (int j = 0; j < m.num_dofs(); ++j)
-        if (const int row = sys.equation(j); row >= 0) worst = std::max(worst, std::abs(d(j) - Kd(row, col)));
-    }
+    const double worst = fd_tangent_error(sys, loads, u, Kd, 1e-7);
     const double size = Kd.cwiseAbs().maxCoeff();
     EXPECT_LT(worst, 1e-6 * size) << m.title;
     std::printf("%s: FD of the assembled residual vs K: %.2e (max |K| %.2e)\n", m.title.c_str(), worst, size);
