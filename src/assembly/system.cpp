@@ -398,6 +398,13 @@ std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, i
   return contact_->states(u, c, step);
 }
 
+std::vector<char> System::contact_active_set(const Eigen::VectorXd& u, int step) const {
+  std::vector<char> set;
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c)
+    for (const auto& s : contact_->states(u, static_cast<int>(c), step)) set.push_back(s.point.active ? 1 : 0);
+  return set;
+}
+
 Eigen::VectorXd System::pressure_load(const Eigen::VectorXd& u, int l) const {
   const PressureLoad& load = model_.loads[l];
   const Part& part = model_.parts[load.part];

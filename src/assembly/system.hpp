@@ -68,6 +68,9 @@ public:
   /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
   /// pair's node order; inactive while the pair waits for one of its parts to enter.
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
+  /// Whether each slave node of every contact pair (pairs in order, nodes in pair order) is active
+  /// at u in step `step`; empty without contact pairs. Newton compares it between iterations.
+  std::vector<char> contact_active_set(const Eigen::VectorXd& u, int step) const;
   /// External force per unit pressure of load `l` at u (all DOFs): ∂f_ext/∂p.
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& u, int l) const;
   /// Enclosed volume of the surface of load `l` at u (see surface_pressure.hpp; axisymmetric:

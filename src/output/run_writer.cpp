@@ -48,7 +48,7 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
   for (const auto& r : model.output.history) history_ += "," + r.column;
   history_ += "\n";
   newton_ = "step,increment,attempt,iteration,time,residual,relative_residual,energy,relative_energy,"
-            "backtracks,active_contacts,solver,assembly_s,factor_s,solve_s\n";
+            "backtracks,active_contacts,active_changes,solver,assembly_s,factor_s,solve_s\n";
   if (resume) {
     history_ = csv_prefix(dir_ + "/history.csv", history_, resume->history_rows);
     newton_ = csv_prefix(dir_ + "/newton.csv", newton_, resume->newton_rows);
@@ -63,10 +63,10 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
 }
 
 void RunWriter::on_iteration(const IncrementInfo& info, const IterationRecord& r) {
-  newton_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{},{:.3e},{:.3e},{:.3e}\n", info.step,
+  newton_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{},{},{:.3e},{:.3e},{:.3e}\n", info.step,
                          info.increment, info.attempt, r.iteration, info.time, r.residual, r.relative_residual,
-                         r.energy, r.relative_energy, r.backtracks, r.active_contacts, r.solver, r.assembly_seconds,
-                         r.factor_seconds, r.solve_seconds);
+                         r.energy, r.relative_energy, r.backtracks, r.active_contacts, r.active_changes, r.solver,
+                         r.assembly_seconds, r.factor_seconds, r.solve_seconds);
   ++newton_rows_;
   if (progress_)
     std::fprintf(progress_, "  step %d increment %d iteration %d  residual %.3e  relative %.3e\n", info.step,

@@ -169,6 +169,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
   }
   double slope0 = 0;  // Δu·R(u) of the correction Δu being tried (line search; halved with it)
   if (first == 1) slope0 = -e1;  // the predictor's Δu·(R_f + K_fp Δu_p) = −|…|
+  std::vector<char> previous_set;  // contact active set at the previous residual
   for (int k = first;; ++k) {
     IterationRecord rec;
     rec.iteration = k;
@@ -210,6 +211,13 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       c = system.volume(u, constraint->load, &dV) - constraint->target;
       to_free(dV, dVfree);
       to_free(system.pressure_load(u, constraint->load), gfree);
+    }
+    // The active set's changes since the previous residual (nodes entering plus leaving).
+    if (!system.model().contacts.empty()) {
+      std::vector<char> set = system.contact_active_set(u, loads.step);
+      if (previous_set.size() == set.size())
+        for (std::size_t i = 0; i < set.size(); ++i) rec.active_changes += set[i] != previous_set[i];
+      previous_set = std::move(set);
     }
     rec.assembly_seconds = seconds_since(t0);
     previous_residual = rec.residual;

@@ -18,6 +18,8 @@ struct IterationRecord {
   double relative_energy = 1;    ///< energy / |Δu_1 · R_0|
   int backtracks = 0;             ///< line-search halvings of the last correction before this residual
   int active_contacts = 0;        ///< active contact slave nodes at this residual
+  int active_changes = 0;         ///< slave nodes whose contact status (active or not) differs from the
+                                  ///< previous iteration's of this attempt (0 at the first residual)
   std::string solver;             ///< the linear solver that factorized K (empty: no solve); "+shift": K was
                                   ///< singular and its diagonal was perturbed by 1e-6 |K_ii| (newton.cpp)
   double assembly_seconds = 0;

@@ -212,9 +212,14 @@ TEST(DeformableContactDeck, NewtonConvergesQuadraticallyOnceTheActiveSetSettles)
     if (key.first != 2) continue;
     bool same = true;
     for (const auto& r : recs) same = same && r.active_contacts == recs.front().active_contacts;
+    // newton.csv's active_changes: at least the change of the count, 0 at an increment's first residual.
+    EXPECT_EQ(recs.front().active_changes, 0);
+    for (std::size_t j = 1; j < recs.size(); ++j)
+      EXPECT_GE(recs[j].active_changes, std::abs(recs[j].active_contacts - recs[j - 1].active_contacts));
     if (!same || recs.front().active_contacts == 0) continue;
     ++settled;
     EXPECT_EQ(recs.front().active_contacts, 9);
+    for (const auto& r : recs) EXPECT_EQ(r.active_changes, 0) << "a settled increment keeps the same active nodes";
     double floor = recs.front().residual, last_q = 0;
     for (const auto& r : recs) floor = std::min(floor, r.residual);
     for (std::size_t j = 1; j + 1 < recs.size(); ++j) {
