@@ -120,17 +120,25 @@ Eigen::Matrix2Xd ContactAssembly::current_chain(const std::vector<int>& nodes, c
 }
 
 void ContactAssembly::assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, SparseMatrix* K,
-                               double& scale2, int& active) const {
+                               double& scale2, int& active, std::vector<char>* active_set) const {
+  if (active_set) {
+    std::size_t n = 0;
+    for (const auto& pair : model_.contacts) n += pair.nodes.size();
+    active_set->assign(n, 0);
+  }
+  std::size_t first = 0;  // the pair's first slave node in active_set
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const int ci = static_cast<int>(c);
+    char* flags = active_set ? active_set->data() + first : nullptr;
+    first += model_.contacts[c].nodes.size();
     if (!pair_active(ci, step)) continue;
-    if (model_.contacts[c].deformable()) assemble_deformable(ci, u, R, K, scale2, active);
-    else assemble_rigid(ci, u, R, K, scale2, active);
+    if (model_.contacts[c].deformable()) assemble_deformable(ci, u, R, K, scale2, active, flags);
+    else assemble_rigid(ci, u, R, K, scale2, active, flags);
   }
 }
 
 void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
-                                     double& scale2, int& active) const {
+                                     double& scale2, int& active, char* flags) const {
   const ContactPair& pair = model_.contacts[c];
   const RigidSurface& rigid = model_.rigid_surfaces[pair.rigid];
   for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
@@ -141,6 +149,7 @@ void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::Vec
     const ContactPoint cp = rigid_contact(rigid, xs, pair.areas[k], pair.law, f, K ? &Kc : nullptr);
     if (!cp.active) continue;
     ++active;
+    if (flags) flags[k] = 1;
     R.segment<2>(2 * n) += f;
     scale2 += f.squaredNorm();
     // The gap is a difference of coordinates: its round-off is ~ε_mach |x_s|, times the penalty stiffness.
@@ -154,7 +163,7 @@ void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::Vec
 }
 
 void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
-                                          double& scale2, int& active) const {
+                                          double& scale2, int& active, char* flags) const {
   const ContactPair& pair = model_.contacts[c];
   const Eigen::Matrix2Xd chain = current_chain(pair.master, u);
   for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
@@ -163,6 +172,7 @@ void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen
     DeformableContactElement e;
     if (!deformable_element(pair, xs, chain, pair.areas[k], K != nullptr, e)) continue;
     ++active;
+    if (flags) flags[k] = 1;
     // The contact element (slave, master nodes), DOFs (r, z) per node; −1: a ghost slot (no DOFs).
     std::array<int, 5> nodes{};
     nodes[0] = s;

@@ -20,9 +20,10 @@
 // Sparsity: the pattern is fixed at set-up but the segment a slave node touches
 // changes as it slides, so the pattern couples every slave node with every
 // master node of the pair (S×M 2×2 blocks, both ways) and master nodes up to
-// one (faceted) or three (smooth) apart. Cost: 8 S·M extra nonzeros (e.g. 100 balloon nodes against 500
-// plaque nodes: 4·10⁵ entries, 3 MB, and the fill of a dense S×M coupling in
-// the factorization) — meant for axisymmetric models of ≤ 10³ contact nodes.
+// one (faceted) or three (smooth) apart. Cost: 8 S·M extra nonzeros (e.g. 100
+// balloon nodes against 500 plaque nodes: 4·10⁵ entries, 3 MB, and the fill of
+// a dense S×M coupling in the factorization) — meant for axisymmetric models of
+// ≤ 10³ contact nodes.
 #include <Eigen/Dense>
 #include <array>
 #include <vector>
@@ -54,10 +55,12 @@ public:
 
   /// R += f and, if K is given (the pattern's structure), K += ∂f/∂u for every active slave node;
   /// scale2 += ‖f‖² + (‖K_c‖ |x|)² (round-off yardstick: the gap is a difference of coordinates);
-  /// active += the number of active slave nodes.
-  /// Pairs touching a part that has not entered by `step` (0-based, Model::part_active) are skipped.
+  /// active += the number of active slave nodes; `active_set`, if given, is set to whether each
+  /// slave node (pairs in order, nodes in pair order) is active.
+  /// Pairs touching a part that has not entered by `step` (0-based, Model::part_active) are skipped
+  /// (their nodes inactive).
   void assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
-                int& active) const;
+                int& active, std::vector<char>* active_set = nullptr) const;
   /// Whether pair `c` takes part in step `step`: every part holding one of its slave or master
   /// nodes has entered.
   bool pair_active(int c, int step) const { return step >= pair_enter_[c]; }
@@ -68,10 +71,11 @@ public:
   std::vector<ContactNodeState> states(const Eigen::VectorXd& u, int c, int step) const;
 
 private:
+  /// `flags`, if given: one per slave node of pair c, set to 1 for the active ones.
   void assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
-                      int& active) const;
+                      int& active, char* flags) const;
   void assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
-                           int& active) const;
+                           int& active, char* flags) const;
   /// Current positions of a chain of nodes (columns (r, z)).
   Eigen::Matrix2Xd current_chain(const std::vector<int>& nodes, const Eigen::VectorXd& u) const;
 

@@ -359,7 +359,7 @@ void System::assemble_surface(int p, int b, const Eigen::VectorXd& u, double pre
 }
 
 void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
-                      double* force_scale, int* active_contacts) const {
+                      double* force_scale, int* active_contacts, std::vector<char>* active_set) const {
   R.setZero(num_dofs());
   double scale2 = 0;
   if (K) {
@@ -389,20 +389,13 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   // Contact, serially in pair and node order (deterministic), after the elements; pairs with a
   // part that has not entered yet are skipped.
   int active = 0;
-  contact_->assemble(u, loads.step, R, K, scale2, active);
+  contact_->assemble(u, loads.step, R, K, scale2, active, active_set);
   if (active_contacts) *active_contacts = active;
   if (force_scale) *force_scale = std::sqrt(scale2);
 }
 
 std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, int c, int step) const {
   return contact_->states(u, c, step);
-}
-
-std::vector<char> System::contact_active_set(const Eigen::VectorXd& u, int step) const {
-  std::vector<char> set;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c)
-    for (const auto& s : contact_->states(u, static_cast<int>(c), step)) set.push_back(s.point.active ? 1 : 0);
-  return set;
 }
 
 Eigen::VectorXd System::pressure_load(const Eigen::VectorXd& u, int l) const {

@@ -62,15 +62,14 @@ public:
   /// Contact pairs add each active slave node's penalty force and tangent (contact_assembly.hpp:
   /// rigid pairs on the slave's DOFs, deformable pairs on the slave's and the master segment's),
   /// and ‖f_c‖² + (‖K_c‖ |x|)² to the yardstick (the gap is a difference of coordinates);
-  /// `active_contacts`, if given, receives the number of active slave nodes (all pairs).
+  /// `active_contacts`, if given, receives the number of active slave nodes (all pairs), and
+  /// `active_set` whether each slave node is active (pairs in order, nodes in pair order).
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
-                double* force_scale = nullptr, int* active_contacts = nullptr) const;
+                double* force_scale = nullptr, int* active_contacts = nullptr,
+                std::vector<char>* active_set = nullptr) const;
   /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
   /// pair's node order; inactive while the pair waits for one of its parts to enter.
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
-  /// Whether each slave node of every contact pair (pairs in order, nodes in pair order) is active
-  /// at u in step `step`; empty without contact pairs. Newton compares it between iterations.
-  std::vector<char> contact_active_set(const Eigen::VectorXd& u, int step) const;
   /// External force per unit pressure of load `l` at u (all DOFs): ∂f_ext/∂p.
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& u, int l) const;
   /// Enclosed volume of the surface of load `l` at u (see surface_pressure.hpp; axisymmetric:

@@ -39,9 +39,12 @@
 // y = (x_s, P_{k−1}, P_k, P_{k+1}, P_{k+2}) (10 unknowns)
 //   f = ∂Π/∂y = ε A_s g_N ∂g_N/∂y,   K = ε A_s (∂g_N/∂y ⊗ ∂g_N/∂y + g_N ∂²g_N/∂y²),
 // where the derivatives of g_N include those of ξ*(y): they are taken exactly
-// by second-order forward differentiation (core/jet.hpp) of two Newton steps
-// of F = 0 started at the converged ξ* (each step doubles the order of the
-// derivatives that are exact: after two, value, gradient and Hessian).
+// by second-order forward differentiation (core/jet.hpp) of one Newton step of
+// F = 0 started at the converged ξ*. That step makes ξ*'s value and gradient
+// exact (implicit function theorem), and the Hessian of g_N needs no more:
+// ∂g_N/∂ξ = (x − c)·n′ = 0 at the foot (x − c ∥ n ⊥ n′), so the term with
+// ∂²ξ*/∂y² drops out. The state (gap, pressure, energy) is taken from the same
+// jet, so energy, force and tangent agree.
 #include <Eigen/Dense>
 #include <array>
 

@@ -91,18 +91,8 @@ Jet<N> operator*(const Jet<N>& a, const Jet<N>& b) {
 }
 
 template <int N>
-Jet<N> operator*(const Jet<N>& a, double c) {
-  return c * a;
-}
-
-template <int N>
 Jet<N> operator-(const Jet<N>& a, double c) {
   return a + (-c);
-}
-
-template <int N>
-Jet<N> operator-(const Jet<N>& a) {
-  return (-1.0) * a;
 }
 
 /// 1/a:  φ′ = −1/a²,  φ″ = 2/a³.

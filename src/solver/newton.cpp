@@ -169,7 +169,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
   }
   double slope0 = 0;  // Δu·R(u) of the correction Δu being tried (line search; halved with it)
   if (first == 1) slope0 = -e1;  // the predictor's Δu·(R_f + K_fp Δu_p) = −|…|
-  std::vector<char> previous_set;  // contact active set at the previous residual
+  std::vector<char> active_set, previous_set;  // contact active set at this / the previous residual
   for (int k = first;; ++k) {
     IterationRecord rec;
     rec.iteration = k;
@@ -182,7 +182,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     for (;;) {
       inadmissible.clear();
       try {
-        system.assemble(u, loads, R, &K, &scale, &rec.active_contacts);
+        system.assemble(u, loads, R, &K, &scale, &rec.active_contacts, &active_set);
         to_free(R, Rf);
         rec.residual = Rf.norm();
       } catch (const std::domain_error& e) {
@@ -213,12 +213,9 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       to_free(system.pressure_load(u, constraint->load), gfree);
     }
     // The active set's changes since the previous residual (nodes entering plus leaving).
-    if (!system.model().contacts.empty()) {
-      std::vector<char> set = system.contact_active_set(u, loads.step);
-      if (previous_set.size() == set.size())
-        for (std::size_t i = 0; i < set.size(); ++i) rec.active_changes += set[i] != previous_set[i];
-      previous_set = std::move(set);
-    }
+    if (previous_set.size() == active_set.size())
+      for (std::size_t i = 0; i < active_set.size(); ++i) rec.active_changes += active_set[i] != previous_set[i];
+    previous_set.swap(active_set);
     rec.assembly_seconds = seconds_since(t0);
     previous_residual = rec.residual;
     // Under volume control R₀ is ~0 (only the target moved): the first corrected residual is the yardstick.
