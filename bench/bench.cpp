@@ -31,7 +31,6 @@
 #include <map>
 #include <cstdio>
 #include <fstream>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -39,6 +38,7 @@
 #include "io/deck.hpp"
 #include "solver/analysis.hpp"
 #include "solver/linear_solver.hpp"
+#include "../tests/support/fung_tube.hpp"
 #include "../tests/support/sphere_octant.hpp"
 
 namespace {
@@ -73,31 +73,7 @@ std::string solver_block(const Options& o) {
 /// Tube deck: around = along so that the split quads are near-square (length 2πR).
 std::string tube_deck(const Options& o, int& around) {
   around = std::max(4, 4 * static_cast<int>(std::lround(std::sqrt(o.triangles / 2.0) / 4)));  // x0, y0 sets
-  const int incs = o.increments > 0 ? o.increments : 6;
-  return fmt::format(R"(title: bench Fung tube, {0} x {0} split quads
-units: {{length: mm, force: N}}
-materials:
-  aorta: {{type: fung, c: 61.163 kPa, a1: 0.68238, a2: 0.60558, a4: 0.1067}}
-parts:
-  wall:
-    element: membrane
-    material: aorta
-    thickness: 0.122 mm
-    mesh: {{type: tube, radius: 0.763 mm, length: {1} mm, around: {0}, along: {0}, shape: staggered_triangle}}
-    frame: {{type: cylindrical, axis: [0, 0, 1]}}
-boundary:
-  base: {{node_set: wall.bottom, dofs: [z]}}
-  stretch: {{node_set: wall.top, dofs: [z]}}
-  sym_x: {{node_set: wall.x0, dofs: [x]}}
-  sym_y: {{node_set: wall.y0, dofs: [y]}}
-loads:
-  lumen: {{type: pressure, part: wall}}
-{2}steps:
-  - {{name: prestretch, increments: 4, set: {{stretch: {4} mm, lumen: 40 mmHg}}}}
-  - {{name: inflation, increments: {3}, set: {{lumen: 120 mmHg}}}}
-output: {{vtk: false}}
-)",
-                     around, 2 * std::numbers::pi * 0.763, solver_block(o), incs, 0.3 * 2 * std::numbers::pi * 0.763);
+  return tunica::test::fung_tube_deck(around, solver_block(o), o.increments > 0 ? o.increments : 6);
 }
 
 std::string sphere_deck(const Options& o) {

@@ -13,9 +13,11 @@
 #include "elements/axisym_membrane.hpp"
 #include "elements/axisym_shell.hpp"
 #include "elements/shell_output.hpp"
+#include "elements/start_tension.hpp"
 #include "loads/axisym_shell_pressure.hpp"
 #include "loads/axisym_pressure.hpp"
 #include "loads/surface_pressure.hpp"
+#include "mesh/surface_curvature.hpp"
 
 namespace tunica {
 
@@ -79,8 +81,17 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     return static_cast<int>(std::lower_bound(begin, end, i) - pattern_.innerIndexPtr());
   };
   blocks_.resize(model.parts.size());
+  extent_.assign(model.parts.size(), 0.0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const Part& part = model.parts[p];
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (const auto& block : part.blocks)
+      for (int node : block.nodes) {
+        lo = lo.cwiseMin(model.X[node]);
+        hi = hi.cwiseMax(model.X[node]);
+      }
+    if (hi(0) >= lo(0)) extent_[p] = (hi - lo).norm();
+    std::vector<std::vector<double>> curvature = element_mean_curvature(model, part);
     int first = 0;
     for (const auto& block : part.blocks) {
       Block data;
@@ -98,6 +109,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
           }
       }
       colour_elements(block, model.num_nodes(), data.order, data.colour_start);
+      data.curvature = std::move(curvature[&block - part.blocks.data()]);
       first += block.size();
       blocks_[p].push_back(std::move(data));
     }
@@ -366,10 +378,7 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
     if (K->nonZeros() != pattern_.nonZeros()) *K = pattern_;
     std::fill(K->valuePtr(), K->valuePtr() + K->nonZeros(), 0.0);
   }
-  // Pressure per part (sum of the loads acting on it, with their sides).
-  std::vector<double> pressure(model_.parts.size(), 0.0);
-  for (std::size_t l = 0; l < model_.loads.size(); ++l)
-    pressure[model_.loads[l].part] += model_.loads[l].sign * loads.pressure[l];
+  const std::vector<double> pressure = part_pressures(loads);
 
   // Inactive parts (not entered yet) are skipped with their loads; their nodes are held.
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
@@ -392,6 +401,45 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   contact_->assemble(u, loads.step, R, K, scale2, active, active_set);
   if (active_contacts) *active_contacts = active;
   if (force_scale) *force_scale = std::sqrt(scale2);
+}
+
+std::vector<double> System::part_pressures(const LoadState& loads) const {
+  std::vector<double> pressure(model_.parts.size(), 0.0);
+  for (std::size_t l = 0; l < model_.loads.size(); ++l)
+    pressure[model_.loads[l].part] += model_.loads[l].sign * loads.pressure[l];
+  return pressure;
+}
+
+Eigen::VectorXd System::add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, SparseMatrix& K) const {
+  Eigen::VectorXd Kd = Eigen::VectorXd::Zero(num_dofs());
+  const std::vector<double> pressure = part_pressures(loads);
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    if (pressure[p] == 0.0 || !model_.part_active(static_cast<int>(p), loads.step)) continue;
+    const double cap = extent_[p] > 0 ? 1.0 / extent_[p] : 0.0;  // |H| floor: T₀ ≤ |p| L
+    for (std::size_t b = 0; b < model_.parts[p].blocks.size(); ++b) {
+      const ElementBlock& block = model_.parts[p].blocks[b];
+      const Block& data = blocks_[p][b];
+      const auto kernel = [&]<int N>(const std::vector<MembraneReference<N>>& refs) {
+        constexpr int nd = 3 * N;
+        for_each_coloured(data, [&](int e) {
+          const double T0 = std::abs(pressure[p]) / std::max(std::abs(data.curvature[e]), cap);
+          ElementMatrix<N> Ke;
+          normal_tension_stiffness<N>(refs[e], T0, Ke);
+          const int* en = block.element(e);
+          ElementVector<N> f = ElementVector<N>::Zero();
+          if (d.size() > 0) {
+            ElementVector<N> de;
+            for (int a = 0; a < N; ++a) de.template segment<3>(3 * a) = d.segment<3>(3 * en[a]);
+            f = Ke * de;
+          }
+          scatter(en, 3, f, &Ke, data.scatter.data() + nd * nd * e, Kd, &K);
+        });
+      };
+      if (block.kind == ElementKind::tri3) kernel(data.tri);
+      if (block.kind == ElementKind::quad4) kernel(data.quad);
+    }
+  }
+  return Kd;
 }
 
 std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, int c, int step) const {

@@ -67,6 +67,14 @@ public:
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                 double* force_scale = nullptr, int* active_contacts = nullptr,
                 std::vector<char>* active_set = nullptr) const;
+  /// The first Newton correction from a stress-free state (theory manual §7.2, solver/newton.hpp):
+  /// adds to K (free DOFs) the normal-tension stiffness K₀ (elements/start_tension.hpp) of every
+  /// 3-D membrane element of an active part under pressure p, with the tension
+  ///     T₀ = |p| / max(|H_e|, 1/L)
+  /// (twice Laplace's p/2H; H_e the element's mean curvature, mesh/surface_curvature.hpp; L the
+  /// diagonal of the part's bounding box, which caps T₀ on flat regions), and returns K₀ d
+  /// (all DOFs; d over all DOFs, or empty for none).
+  Eigen::VectorXd add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, SparseMatrix& K) const;
   /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
   /// pair's node order; inactive while the pair waits for one of its parts to enter.
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
@@ -96,7 +104,10 @@ private:
     std::vector<int> scatter;  ///< per element, (n·d)² positions in K's value array (−1: not free-free)
     std::vector<int> order;    ///< element indices, colour by colour
     std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])
+    std::vector<double> curvature;  ///< 3-D blocks: per element, the mean curvature H_e (surface_curvature.hpp)
   };
+  /// Pressure on each part: the sum of the loads acting on it, with their sides.
+  std::vector<double> part_pressures(const LoadState& loads) const;
   /// Runs kernel(e) for every element of a block, colour by colour, in parallel within a colour.
   /// An exception of a kernel (an inverted element) is rethrown after the loop: the one of
   /// the lowest element index, so that the message does not depend on the threads.
@@ -126,6 +137,7 @@ private:
   int num_free_ = 0;
   SparseMatrix pattern_;
   std::vector<std::vector<Block>> blocks_;  ///< per part, per block
+  std::vector<double> extent_;              ///< per part: the diagonal of its reference bounding box
   /// Per DOF: the step from which it is free to move (the lowest enter_step of the parts using its node; 0 if none).
   std::vector<int> dof_enter_;
   /// Free DOFs that may be held: DOF, position of K_ii in K's values, k_i.

@@ -123,6 +123,13 @@ const ComponentSpec& solver_spec() {
                                 "new prescribed values"),
                            {"tangent", "none"}),
                     "tangent"),
+       with_default(one_of(text("stress_free_start",
+                                "first correction of an increment that starts at the stress-free reference state "
+                                "under pressure: stiffened = its tangent gets the normal-tension stiffness of the "
+                                "Laplace estimate T0 = |p|/|H| on every pressurized 3-D membrane element (the Newton "
+                                "direction changes, not the solution); exact = the plain tangent"),
+                           {"stiffened", "exact"}),
+                    "stiffened"),
        with_default(one_of(text("pressure_stiffness",
                                 "follower-pressure load stiffness: exact (consistent, quadratic Newton) or "
                                 "symmetrized, (K + Kᵀ)/2, which CHOLMOD can factorize (ignored under volume control)"),
@@ -200,6 +207,7 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
     if (key == "pressure_stiffness") base.symmetrize_pressure_stiffness = p.text(key) == "symmetrized";
     if (key == "line_search") base.line_search = p.boolean(key);
     if (key == "predictor") base.tangent_predictor = p.text(key) == "tangent";
+    if (key == "stress_free_start") base.stiffen_stress_free_start = p.text(key) == "stiffened";
   }
   return base;
 }

@@ -168,6 +168,9 @@ struct SolverSettings {
   /// When prescribed displacements move: the first iteration linearizes their increment at the
   /// last converged state (solver/newton.hpp) instead of starting from it with the new values.
   bool tangent_predictor = true;
+  /// The first correction of an increment that starts at the stress-free reference state adds the
+  /// normal-tension stiffness of a Laplace tension estimate to its tangent (solver/newton.hpp).
+  bool stiffen_stress_free_start = true;
 };
 
 struct Step {

@@ -66,7 +66,7 @@ double step_bound(const System& system) {
 template <class ToFree>
 bool predict(const System& system, LinearSolver& solver, const LoadState& loads, const Eigen::VectorXd& un,
              Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& R, Eigen::VectorXd& Rf, Eigen::VectorXd& du,
-             double bound, double& r0, double& e1, const ToFree& to_free,
+             double bound, bool stiffen, double& r0, double& e1, const ToFree& to_free,
              const std::function<void(const IterationRecord&)>& on_iteration) {
   const Eigen::VectorXd dp = u - un;  // the prescribed increment (zero on free DOFs)
   if (dp.size() == 0 || dp.cwiseAbs().maxCoeff() == 0) return false;
@@ -84,8 +84,13 @@ bool predict(const System& system, LinearSolver& solver, const LoadState& loads,
   }
   to_free(R, Rf);
   to_free(Eigen::VectorXd((Rp - Rm) / (2 * h)), d);
-  const Eigen::VectorXd rhs = -(Rf + d);
-  rec.residual = rhs.norm();
+  Eigen::VectorXd rhs = -(Rf + d);
+  rec.residual = rhs.norm();  // R₀ without the start stiffness: the yardstick of the tolerances
+  if (stiffen) {  // K₀ on K_ff, and K₀_fp Δu_p: the gradient of ½ (u − u_n)ᵀ K₀ (u − u_n) at u_n + Δu_p
+    Eigen::VectorXd k0(nf);
+    to_free(system.add_start_stiffness(loads, dp, K), k0);
+    rhs -= k0;
+  }
   rec.assembly_seconds = seconds_since(t0);
   if (!std::isfinite(rec.residual) || rec.residual == 0) return false;
   Eigen::VectorXd step;
@@ -161,9 +166,12 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       if (system.equation(i) >= 0) free(system.equation(i)) = full(i);
   };
   const double bound = step_bound(system);
+  // The increment starts at the stress-free reference state (newton.hpp, stress-free start).
+  const bool stiffen = settings.stiffen_stress_free_start && !constraint && converged && converged->size() > 0 &&
+                       (converged->array() == 0.0).all();
   int first = 0;
   if (converged && settings.tangent_predictor && !constraint &&
-      predict(system, solver, loads, *converged, u, K, R, Rf, du, bound, r0, e1, to_free, on_iteration)) {
+      predict(system, solver, loads, *converged, u, K, R, Rf, du, bound, stiffen, r0, e1, to_free, on_iteration)) {
     previous_residual = r0;
     first = 1;
   }
@@ -250,6 +258,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       result.failure = fmt::format("no convergence in {} iterations", settings.max_iterations);
       return result;
     }
+    if (k == 0 && stiffen) system.add_start_stiffness(loads, Eigen::VectorXd(), K);  // the tangent only; R stays exact
     if (constraint) fill_bordered(K, gfree, dVfree, A);
     else if (symmetrize) symmetrize->symmetrize(K);
     Eigen::VectorXd rhs(constraint ? nf + 1 : nf);

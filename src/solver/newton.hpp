@@ -61,6 +61,19 @@ struct VolumeConstraint {
 /// solution). Its norm is R₀ (what the plain start's residual is for a linear model), and
 /// the predictor counts as the first iteration. If K(u_n) cannot be factorized or u_n is not
 /// admissible under the new loads, Newton starts plainly from u.
+///
+/// Stress-free start (settings.stiffen_stress_free_start, no volume constraint): when the increment
+/// starts at the reference state (u_n = 0), the first correction — the predictor's, or iteration
+/// 0's — is computed with K + K₀, K₀ the normal-tension stiffness of a Laplace tension estimate on
+/// every pressurized 3-D membrane element (System::add_start_stiffness; theory manual §7.2). A
+/// stress-free membrane resists the relative normal motion of its nodes only with its facets'
+/// in-plane stiffness, which is mesh-irregular (a cube-sphere's valence-3 corner) and vanishes as
+/// the mesh is refined (a cylinder's inextensional modes), while the pressure's load stiffness
+/// pushes them out: the plain first correction dimples the surface, and the tangent is indefinite
+/// (UMFPACK, not CHOLMOD). K₀ acts on the normal displacement's gradient only, so a uniform
+/// expansion and in-plane stretching are untouched. The predictor's right-hand side gets
+/// K₀_fp Δu_p (K₀ is the Hessian of ½ (u − u_n)ᵀ K₀ (u − u_n)); R₀, the residual and the later
+/// tangents are exact, so the converged state is the same as without it.
 /// Factorizes M and solves M x = b. If M is singular — the factorization fails, x is not
 /// finite, or x moves a DOF farther than `max_step` (Newton passes ten times the model's size:
 /// a near-null mode amplified by a tiny pivot) — and `allow_shift`, retries with the diagonal

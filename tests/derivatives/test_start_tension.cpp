@@ -1,0 +1,138 @@
+// The normal-tension stiffness of the stress-free start (elements/start_tension.hpp,
+// System::add_start_stiffness):
+//  - K₀ against the closed form T₀ ∫ ∇N_a·∇N_b dA (n nᵀ) on a flat right triangle and a square;
+//  - symmetric and positive semidefinite on warped, rotated elements, with no stiffness against
+//    rigid translations, uniform normal motion of a flat element, or in-plane motion of it;
+//  - the vector System::add_start_stiffness returns, K₀ d, has K₀ as its finite-difference
+//    Jacobian (it is the gradient of the quadratic ½ dᵀ K₀ d), on the free DOFs of a sphere octant.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <random>
+
+#include "../support/fd.hpp"
+#include "../support/sphere_octant.hpp"
+#include "assembly/system.hpp"
+#include "elements/start_tension.hpp"
+#include "io/deck.hpp"
+
+using namespace tunica;
+
+namespace {
+
+const DirectionRule kAlongX = [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return Eigen::Vector3d(1, 0, 0); };
+
+}  // namespace
+
+TEST(StartTension, FlatRightTriangleMatchesTheClosedForm) {
+  // Nodes (0,0), (1,0), (0,1) in z = 0: ∇N = (−1,−1), (1,0), (0,1), area ½, so
+  // ∫ ∇N_a·∇N_b dA = ½ [[2, −1, −1], [−1, 1, 0], [−1, 0, 1]]; K₀ = T₀ × that on the z components.
+  SurfaceNodes<3> X;
+  X << 0, 1, 0, 0, 0, 1, 0, 0, 0;
+  const MembraneReference<3> ref = membrane_reference<3>(X, 0.3, kAlongX);
+  const double T0 = 2.5;
+  ElementMatrix<3> K;
+  normal_tension_stiffness<3>(ref, T0, K);
+  Eigen::Matrix3d L;
+  L << 2, -1, -1, -1, 1, 0, -1, 0, 1;
+  L *= 0.5;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          EXPECT_NEAR(K(3 * a + i, 3 * b + j), (i == 2 && j == 2) ? T0 * L(a, b) : 0.0, 1e-14) << a << b << i << j;
+}
+
+TEST(StartTension, FlatUnitSquareMatchesTheClosedForm) {
+  // Bilinear unit square: ∫ ∇N_a·∇N_b dA = 2/3 (a = b), −1/6 (neighbours), −1/3 (opposite),
+  // exact with the 2 × 2 Gauss rule.
+  SurfaceNodes<4> X;
+  X << 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0;
+  const MembraneReference<4> ref = membrane_reference<4>(X, 0.1, kAlongX);
+  ElementMatrix<4> K;
+  normal_tension_stiffness<4>(ref, 1.0, K);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const int d = (b - a + 4) % 4;
+      const double expected = d == 0 ? 2.0 / 3 : d == 2 ? -1.0 / 3 : -1.0 / 6;
+      EXPECT_NEAR(K(3 * a + 2, 3 * b + 2), expected, 1e-14) << a << b;
+    }
+}
+
+TEST(StartTension, SymmetricSemidefiniteAndBlindToRigidAndUniformNormalMotion) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Matrix3d Q = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
+    SurfaceNodes<4> X;
+    X << 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0;
+    for (int a = 0; a < 4; ++a) X.col(a) += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+    X = Q * X;
+    const MembraneReference<4> ref = membrane_reference<4>(X, 0.1, kAlongX);
+    ElementMatrix<4> K;
+    normal_tension_stiffness<4>(ref, 1.7, K);
+    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * K.cwiseAbs().maxCoeff());
+    const Eigen::SelfAdjointEigenSolver<ElementMatrix<4>> eig(K);
+    EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-12 * eig.eigenvalues().maxCoeff());
+    ElementVector<4> t;
+    for (int a = 0; a < 4; ++a) t.segment<3>(3 * a) = Q.col(0) + 2 * Q.col(2);
+    EXPECT_LT((K * t).norm(), 1e-12 * K.norm() * t.norm()) << "rigid translation";
+  }
+  // A flat element: no stiffness against a uniform normal motion or any in-plane motion.
+  SurfaceNodes<3> X;
+  X << 0, 1.3, 0.2, 0, 0.1, 0.9, 0, 0, 0;
+  const MembraneReference<3> ref = membrane_reference<3>(X, 0.1, kAlongX);
+  ElementMatrix<3> K;
+  normal_tension_stiffness<3>(ref, 3.0, K);
+  ElementVector<3> w, inplane;
+  w << 0, 0, 1, 0, 0, 1, 0, 0, 1;
+  inplane << 0.3, -0.2, 0, 1.1, 0.4, 0, -0.7, 0.5, 0;
+  EXPECT_LT((K * w).norm(), 1e-14 * K.norm());
+  EXPECT_LT((K * inplane).norm(), 1e-14 * K.norm());
+  ElementVector<3> bump = ElementVector<3>::Zero();
+  bump(5) = 1;  // node 1 out of the plane: resisted
+  EXPECT_GT(bump.dot(K * bump), 0.1 * K.norm());
+}
+
+TEST(StartTension, SystemVectorIsTheGradientOfTheQuadraticWhoseHessianItAdds) {
+  const Model model =
+      read_deck_text(test::sphere_octant_deck("start tension FD", 3, "", 1), "start-tension-fd.yaml");
+  const System system(model);
+  LoadState loads;
+  loads.boundary.assign(model.boundaries.size(), 0.0);
+  loads.pressure.assign(model.loads.size(), test::sphere_octant_pressure());
+  loads.volume.assign(model.loads.size(), 0.0);
+  SparseMatrix K = system.pattern();
+  std::fill(K.valuePtr(), K.valuePtr() + K.nonZeros(), 0.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-0.1, 0.1);
+  Eigen::VectorXd d(system.num_dofs());
+  for (int i = 0; i < d.size(); ++i) d(i) = system.equation(i) >= 0 ? U(rng) : 0.0;
+  system.add_start_stiffness(loads, d, K);
+  ASSERT_GT(K.norm(), 0.0);
+  // Free part of K₀ d as a function of the free DOFs.
+  const int nf = system.num_free();
+  const auto free_map = [&](const Eigen::VectorXd& full) {
+    Eigen::VectorXd f(nf);
+    for (int i = 0; i < system.num_dofs(); ++i)
+      if (system.equation(i) >= 0) f(system.equation(i)) = full(i);
+    return f;
+  };
+  const auto gradient = [&](const Eigen::VectorXd& df) {
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(system.num_dofs());
+    for (int i = 0; i < system.num_dofs(); ++i)
+      if (system.equation(i) >= 0) full(i) = df(system.equation(i));
+    SparseMatrix scratch = system.pattern();
+    return free_map(system.add_start_stiffness(loads, full, scratch));
+  };
+  const Eigen::MatrixXd J = test::fd_jacobian(gradient, free_map(d), 1e-6);
+  const Eigen::MatrixXd Kd = Eigen::MatrixXd(K);
+  EXPECT_LT((J - Kd).norm(), 1e-8 * Kd.norm());
+  EXPECT_LT((Kd - Kd.transpose()).norm(), 1e-14 * Kd.norm());
+  // No pressure, no stiffening.
+  loads.pressure.assign(model.loads.size(), 0.0);
+  SparseMatrix K0 = system.pattern();
+  EXPECT_EQ(system.add_start_stiffness(loads, d, K0).norm(), 0.0);
+  EXPECT_EQ(K0.norm(), 0.0);
+}

@@ -1,0 +1,44 @@
+#pragma once
+// The closed 3-D Fung tube of the benchmark (the rat aorta of THEORY §5: R = 0.763 mm,
+// H = 0.122 mm), length 2πR, ends free to slide radially (held on the planes x = 0 and y = 0
+// against rigid motion), circumferential/axial frame, staggered triangles (around = along),
+// stretched axially to λz = 1.3 with 40 mmHg in 4 increments, then inflated to 120 mmHg.
+// Shared by bench/bench.cpp (which includes it by its relative path) and the tests.
+#include <fmt/format.h>
+
+#include <numbers>
+#include <string>
+
+namespace tunica::test {
+
+/// The deck with `around` × `around` split quads: `solver` is inserted as it is before `steps:`
+/// (a whole `solver: {…}` line with its newline, or empty); `increments` for the inflation.
+inline std::string fung_tube_deck(int around, const std::string& solver, int increments) {
+  const double length = 2 * std::numbers::pi * 0.763;
+  return fmt::format(R"(title: bench Fung tube, {0} x {0} split quads
+units: {{length: mm, force: N}}
+materials:
+  aorta: {{type: fung, c: 61.163 kPa, a1: 0.68238, a2: 0.60558, a4: 0.1067}}
+parts:
+  wall:
+    element: membrane
+    material: aorta
+    thickness: 0.122 mm
+    mesh: {{type: tube, radius: 0.763 mm, length: {1} mm, around: {0}, along: {0}, shape: staggered_triangle}}
+    frame: {{type: cylindrical, axis: [0, 0, 1]}}
+boundary:
+  base: {{node_set: wall.bottom, dofs: [z]}}
+  stretch: {{node_set: wall.top, dofs: [z]}}
+  sym_x: {{node_set: wall.x0, dofs: [x]}}
+  sym_y: {{node_set: wall.y0, dofs: [y]}}
+loads:
+  lumen: {{type: pressure, part: wall}}
+{2}steps:
+  - {{name: prestretch, increments: 4, set: {{stretch: {4} mm, lumen: 40 mmHg}}}}
+  - {{name: inflation, increments: {3}, set: {{lumen: 120 mmHg}}}}
+output: {{vtk: false}}
+)",
+                     around, length, solver, increments, 0.3 * length);
+}
+
+}  // namespace tunica::test
