@@ -4,7 +4,7 @@
 //
 //   tunica-bench tube   --triangles N [--increments 6]
 //   tunica-bench sphere --n N        [--increments 10]
-//   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE]
+//   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE] [--paired]
 //           [--residual-tolerance R] [--energy-tolerance E]   (Newton tests; deck defaults 1e-9, 1e-12)
 //
 // tube:   a closed circular Fung tube (the rat aorta of THEORY §5: R = 0.763 mm,
@@ -61,6 +61,7 @@ struct Options {
   double residual_tolerance = 1e-9;  // the deck defaults
   double energy_tolerance = 1e-12;
   int threads = 0;
+  bool paired = false;
   std::string csv;
 };
 
@@ -81,12 +82,61 @@ std::string sphere_deck(const Options& o) {
                                           solver_block(o), o.increments > 0 ? o.increments : 10);
 }
 
+/// --paired: the bare factorizations timed next to the run's own. After each successful
+/// factorization of the run, the same matrix is factorized again by a separate solver of the
+/// same kind (its symbolic analysis done on its first call, untimed) and that numeric
+/// factorization is timed: the floor measured at the same moment as the iteration, free of the
+/// drift of this shared machine's speed between a run and a floor timed after it. Everything the
+/// pairing adds is subtracted from the iteration's factorization time.
+struct PairedLog {
+  double added = 0;  ///< seconds the pairing added since the last iteration record
+  double bare = 0;   ///< of which the timed bare factorizations
+  int count = 0;
+};
+
+class PairedSolver final : public tunica::LinearSolver {
+public:
+  PairedSolver(std::unique_ptr<tunica::LinearSolver> inner, PairedLog& log) : inner_(std::move(inner)), log_(log) {}
+  bool factorize(const tunica::SparseMatrix& K) override {
+    const bool ok = inner_->factorize(K);
+    if (!ok) return false;
+    const double t0 = now();
+    std::string name = inner_->used();
+    auto& bare = bare_[name];
+    if (!bare) {
+      bare = tunica::make_linear_solver(name);
+      bare->factorize(K);  // the symbolic analysis (and a first numeric factorization): untimed
+    }
+    const double t1 = now();
+    bare->factorize(K);
+    const double t2 = now();
+    log_.bare += t2 - t1;
+    log_.added += t2 - t0;
+    ++log_.count;
+    return true;
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return inner_->solve(b); }
+  const char* used() const override { return inner_->used(); }
+
+private:
+  std::unique_ptr<tunica::LinearSolver> inner_;
+  PairedLog& log_;
+  std::map<std::string, std::unique_ptr<tunica::LinearSolver>> bare_;
+};
+
 /// Collects the Newton records of the run.
 struct Recorder : tunica::AnalysisObserver {
+  PairedLog paired;
+  std::vector<double> paired_bare;  ///< per record: the bare factorizations timed next to it (--paired)
   std::vector<tunica::IterationRecord> records;
   std::vector<int> iterations_per_increment;
   int cutbacks = 0;
-  void on_iteration(const tunica::IncrementInfo&, const tunica::IterationRecord& r) override { records.push_back(r); }
+  void on_iteration(const tunica::IncrementInfo&, const tunica::IterationRecord& r) override {
+    records.push_back(r);
+    records.back().factor_seconds -= paired.added;  // the run's own factorization only
+    paired_bare.push_back(paired.bare);
+    paired = PairedLog{};
+  }
   void on_cutback(const tunica::IncrementInfo&, const std::string&) override { ++cutbacks; }
   void on_increment(const tunica::Analysis&, const tunica::IncrementInfo& i) override {
     if (i.step > 0) iterations_per_increment.push_back(i.iterations);
@@ -102,6 +152,10 @@ int run(const Options& o) {
   tunica::Analysis analysis(model);
   const double t_setup = now() - t_start;
   Recorder rec;
+  if (o.paired)
+    analysis.set_solver_factory([&rec](const std::string& name) -> std::unique_ptr<tunica::LinearSolver> {
+      return std::make_unique<PairedSolver>(tunica::make_linear_solver(name), rec.paired);
+    });
   const double t_run0 = now();
   analysis.run(rec);
   const double t_run = now() - t_run0;
@@ -165,6 +219,14 @@ int run(const Options& o) {
     if (!r.solver.empty()) floor += bare_by[base_name(r.solver)].numeric;
   for (const auto& [name, b] : bare_by) floor += std::max(0.0, b.first - b.numeric);
 
+  // --paired: the mean iteration against the mean bare factorization timed next to it.
+  double paired_sum = 0;
+  int paired_n = 0;
+  for (std::size_t k = 0; k < rec.records.size(); ++k)
+    if (!rec.records[k].solver.empty() && rec.paired_bare[k] > 0) {
+      paired_sum += rec.paired_bare[k];
+      ++paired_n;
+    }
   int max_its = 0;
   for (int i : rec.iterations_per_increment) max_its = std::max(max_its, i);
   const double per_iteration = (assembly + factor + solve) / solves;
@@ -209,6 +271,11 @@ int run(const Options& o) {
               t_bare, t_first, per_iteration / t_bare, median, median / t_bare);
   for (const auto& [name, b] : bare_by)
     if (name != main_solver) std::printf("  bare factorization with %s %.4f s (first %.4f s)\n", name.c_str(), b.numeric, b.first);
+  if (o.paired)
+    std::printf("  paired: bare factorization timed next to each iteration's, mean %.4f s over %d: iteration / "
+                "paired factorization %.2f (peak RSS below includes the pairing's second factor)\n",
+                paired_n ? paired_sum / paired_n : 0.0, paired_n,
+                paired_n ? per_iteration / (paired_sum / paired_n) : 0.0);
   std::printf("  run's factorization floor %.2f s (each iteration's solver, one analysis each): iterations / floor %.2f\n",
               floor, (assembly + factor + solve) / floor);
   {  // where the factorization time went, by the solver each iteration used ("+shift": retried, newton.cpp)
@@ -231,14 +298,14 @@ int run(const Options& o) {
       csv << "problem,size,elements,nodes,unknowns,nonzeros,threads,solver,symmetrized,residual_tolerance,"
              "energy_tolerance,increments,iterations,"
              "max_iterations_per_increment,cutbacks,iteration_s,assembly_s,factor_s,solve_s,bare_factor_s,"
-             "first_factor_s,setup_s,run_s,peak_rss_MB,closed_form_error,median_iteration_s,floor_s,iterations_over_floor\n";
-    csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{},{:.5g},{:.5g},{:.4f}\n",
+             "first_factor_s,setup_s,run_s,peak_rss_MB,closed_form_error,median_iteration_s,floor_s,iterations_over_floor,paired_bare_factor_s\n";
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{},{:.5g},{:.5g},{:.4f},{:.5g}\n",
                        o.problem, size, elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
                        omp_get_max_threads(), used, o.symmetrized ? 1 : 0, o.residual_tolerance, o.energy_tolerance,
                        rec.iterations_per_increment.size(), solves,
                        max_its, rec.cutbacks, per_iteration, assembly / solves, factor / solves, solve / solves, t_bare,
                        t_first, t_setup, t_run, peak_rss_mb(), accuracy, median, floor,
-                       (assembly + factor + solve) / floor);
+                       (assembly + factor + solve) / floor, paired_n ? paired_sum / paired_n : 0.0);
   }
   return 0;
 }
@@ -258,6 +325,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--energy-tolerance", o.energy_tolerance, "Newton: |Δu·R| relative to the first (deck default 1e-12)")
       ->check(CLI::PositiveNumber);
+  app.add_flag("--paired", o.paired, "time a bare factorization of the same matrix next to each of the run's");
   app.add_option("--threads", o.threads, "threads of the element loops")->check(CLI::Range(1, 1024));
   app.add_option("--csv", o.csv, "append a row to this CSV file");
   CLI11_PARSE(app, argc, argv);

@@ -73,7 +73,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
     return start.volume[vc.load] + t * (vc.target - start.volume[vc.load]);
   };
 
-  auto solver = make_linear_solver(step.solver.linear_solver);
+  auto solver = solver_factory_(step.solver.linear_solver);
   const double nominal = 1.0 / step.increments;
   double t = state_.fraction;
   double dt = state_.dt > 0 ? state_.dt : nominal;

@@ -5,6 +5,8 @@
 // the increment size grows back after two converged reduced increments.
 // The whole progress state is a Checkpoint, so that a run can be resumed
 // exactly where a converged increment left it.
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "assembly/system.hpp"
@@ -70,6 +72,10 @@ public:
   const Eigen::VectorXd& reactions() const { return reactions_; }
   /// The progress state after the last converged increment.
   const Checkpoint& checkpoint() const { return state_; }
+  /// Makes each step's linear solver from its `linear_solver` name (default make_linear_solver;
+  /// tunica-bench wraps it to time a bare factorization next to each of the run's).
+  using SolverFactory = std::function<std::unique_ptr<LinearSolver>(const std::string&)>;
+  void set_solver_factory(SolverFactory factory) { solver_factory_ = std::move(factory); }
 
 private:
   void update_reactions();
@@ -82,6 +88,7 @@ private:
   System system_;
   Checkpoint state_;
   Eigen::VectorXd reactions_;
+  SolverFactory solver_factory_ = make_linear_solver;
 };
 
 }  // namespace tunica
