@@ -128,13 +128,17 @@ private:
 struct Recorder : tunica::AnalysisObserver {
   PairedLog paired;
   std::vector<double> paired_bare;  ///< per record: the bare factorizations timed next to it (--paired)
+  std::vector<int> paired_count;    ///< per record: how many (more than one after a "+shift" retry)
   std::vector<tunica::IterationRecord> records;
   std::vector<int> iterations_per_increment;
   int cutbacks = 0;
   void on_iteration(const tunica::IncrementInfo&, const tunica::IterationRecord& r) override {
     records.push_back(r);
-    records.back().factor_seconds -= paired.added;  // the run's own factorization only
+    // The run's own factorization only. (A tangent predictor that factorized but then gave up
+    // reports no record: its pairing is not in this record's time, hence the bound.)
+    records.back().factor_seconds -= std::min(paired.added, r.factor_seconds);
     paired_bare.push_back(paired.bare);
+    paired_count.push_back(paired.count);
     paired = PairedLog{};
   }
   void on_cutback(const tunica::IncrementInfo&, const std::string&) override { ++cutbacks; }
@@ -219,13 +223,13 @@ int run(const Options& o) {
     if (!r.solver.empty()) floor += bare_by[base_name(r.solver)].numeric;
   for (const auto& [name, b] : bare_by) floor += std::max(0.0, b.first - b.numeric);
 
-  // --paired: the mean iteration against the mean bare factorization timed next to it.
+  // --paired: the mean iteration against the mean bare factorization timed next to it (per factorization).
   double paired_sum = 0;
   int paired_n = 0;
   for (std::size_t k = 0; k < rec.records.size(); ++k)
-    if (!rec.records[k].solver.empty() && rec.paired_bare[k] > 0) {
+    if (!rec.records[k].solver.empty() && rec.paired_count[k] > 0) {
       paired_sum += rec.paired_bare[k];
-      ++paired_n;
+      paired_n += rec.paired_count[k];
     }
   int max_its = 0;
   for (int i : rec.iterations_per_increment) max_its = std::max(max_its, i);

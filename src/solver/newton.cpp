@@ -66,7 +66,7 @@ double step_bound(const System& system) {
 template <class ToFree>
 bool predict(const System& system, LinearSolver& solver, const LoadState& loads, const Eigen::VectorXd& un,
              Eigen::VectorXd& u, SparseMatrix& K, Eigen::VectorXd& R, Eigen::VectorXd& Rf, Eigen::VectorXd& du,
-             double bound, bool stiffen, double& r0, double& e1, const ToFree& to_free,
+             double bound, bool stiffen, double& r0, double& e1, double& slope, const ToFree& to_free,
              const std::function<void(const IterationRecord&)>& on_iteration) {
   const Eigen::VectorXd dp = u - un;  // the prescribed increment (zero on free DOFs)
   if (dp.size() == 0 || dp.cwiseAbs().maxCoeff() == 0) return false;
@@ -84,8 +84,9 @@ bool predict(const System& system, LinearSolver& solver, const LoadState& loads,
   }
   to_free(R, Rf);
   to_free(Eigen::VectorXd((Rp - Rm) / (2 * h)), d);
-  Eigen::VectorXd rhs = -(Rf + d);
-  rec.residual = rhs.norm();  // R₀ without the start stiffness: the yardstick of the tolerances
+  const Eigen::VectorXd plain = -(Rf + d);  // the right-hand side without the start stiffness
+  Eigen::VectorXd rhs = plain;
+  rec.residual = plain.norm();  // R₀: the yardstick of the tolerances
   if (stiffen) {  // K₀ on K_ff, and K₀_fp Δu_p: the gradient of ½ (u − u_n)ᵀ K₀ (u − u_n) at u_n + Δu_p
     Eigen::VectorXd k0(nf);
     to_free(system.add_start_stiffness(loads, dp, K), k0);
@@ -100,7 +101,8 @@ bool predict(const System& system, LinearSolver& solver, const LoadState& loads,
   rec.solver = solver.used() + note;
   on_iteration(rec);
   r0 = rec.residual;
-  e1 = std::abs(step.dot(rhs));
+  slope = -step.dot(plain);  // Δu·(R_f + K_fp Δu_p): the energy slope along the correction (K₀ left out)
+  e1 = std::abs(slope);
   du = std::move(step);
   for (int i = 0; i < system.num_dofs(); ++i)
     if (system.equation(i) >= 0) u(i) += du(system.equation(i));
@@ -170,13 +172,13 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
   const bool stiffen = settings.stiffen_stress_free_start && !constraint && converged && converged->size() > 0 &&
                        (converged->array() == 0.0).all();
   int first = 0;
+  double slope0 = 0;  // Δu·R(u) of the correction Δu being tried (line search; halved with it)
   if (converged && settings.tangent_predictor && !constraint &&
-      predict(system, solver, loads, *converged, u, K, R, Rf, du, bound, stiffen, r0, e1, to_free, on_iteration)) {
+      predict(system, solver, loads, *converged, u, K, R, Rf, du, bound, stiffen, r0, e1, slope0, to_free,
+              on_iteration)) {
     previous_residual = r0;
     first = 1;
   }
-  double slope0 = 0;  // Δu·R(u) of the correction Δu being tried (line search; halved with it)
-  if (first == 1) slope0 = -e1;  // the predictor's Δu·(R_f + K_fp Δu_p) = −|…|
   std::vector<char> active_set, previous_set;  // contact active set at this / the previous residual
   for (int k = first;; ++k) {
     IterationRecord rec;

