@@ -41,6 +41,19 @@ struct VolumeConstraint {
   double target = 0;
 };
 
+/// Factorizes M and solves M x = b. If M is singular — the factorization fails, x is not
+/// finite, or x moves a DOF farther than `max_step` (Newton passes ten times the model's size:
+/// a near-null mode amplified by a tiny pivot) — and `allow_shift`, retries with the diagonal
+/// perturbed, M + δ diag(|M_ii|), δ = 1e-6, 1e-4, 1e-2 in turn (a zero diagonal entry: δ times
+/// the largest): a pivot perturbation as in PARDISO or MUMPS. The residual is untouched, so a
+/// converged state is exact; only the Newton direction changes, in the near-null modes: those
+/// of a membrane without stress (the inextensional modes of a cylinder, an unstressed flat
+/// region), which the stress of the next iterates stiffens. `note` is "+shift" when the
+/// perturbation was used; the seconds of all attempts are added up. False if every attempt fails.
+bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
+                     double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
+                     double& solve_seconds);
+
 /// Iterates on u (prescribed DOFs already set) until the convergence tests of
 /// `settings` hold: ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
 /// round-off (≤ 1e-14 of the force scale of System::assemble). On failure u is left as it was last.
@@ -74,19 +87,6 @@ struct VolumeConstraint {
 /// expansion and in-plane stretching are untouched. The predictor's right-hand side gets
 /// K₀_fp Δu_p (K₀ is the Hessian of ½ (u − u_n)ᵀ K₀ (u − u_n)); R₀, the residual and the later
 /// tangents are exact, so the converged state is the same as without it.
-/// Factorizes M and solves M x = b. If M is singular — the factorization fails, x is not
-/// finite, or x moves a DOF farther than `max_step` (Newton passes ten times the model's size:
-/// a near-null mode amplified by a tiny pivot) — and `allow_shift`, retries with the diagonal
-/// perturbed, M + δ diag(|M_ii|), δ = 1e-6, 1e-4, 1e-2 in turn (a zero diagonal entry: δ times
-/// the largest): a pivot perturbation as in PARDISO or MUMPS. The residual is untouched, so a
-/// converged state is exact; only the Newton direction changes, in the near-null modes: those
-/// of a membrane without stress (the inextensional modes of a cylinder, an unstressed flat
-/// region), which the stress of the next iterates stiffens. `note` is "+shift" when the
-/// perturbation was used; the seconds of all attempts are added up. False if every attempt fails.
-bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
-                     double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
-                     double& solve_seconds);
-
 NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
                     const VolumeConstraint* constraint = nullptr, const Eigen::VectorXd* converged = nullptr);
