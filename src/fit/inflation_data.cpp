@@ -9,9 +9,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/bounded_file.hpp"
+
 namespace tunica {
 
 namespace {
+
+constexpr std::size_t kMaxDataBytes = 64u << 20;  ///< a data file of experiments: far below 64 MiB
 
 /// What a recognised column measures.
 enum class Role { pressure, outer_diameter, radius, axial_force, axial_stretch, green_strain_z };
@@ -106,13 +110,6 @@ const char* role_description(Role r) {
   return "?";
 }
 
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0, ""}, std::string("cannot open the data file: ") + std::strerror(errno));
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -129,7 +126,7 @@ std::pair<std::string, double> parse_row_selection(const std::string& text) {
 }
 
 InflationData read_inflation_data(const std::string& path, const InflationDataOptions& options) {
-  return read_inflation_data_text(read_text_file(path), path, options);
+  return read_inflation_data_text(read_file_bounded(path, kMaxDataBytes, "data file"), path, options);
 }
 
 InflationData read_inflation_data_text(const std::string& text, const std::string& file,

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/bounded_file.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_shell_parts.hpp"
@@ -590,16 +591,6 @@ void read_output(const DeckNode& deck, Model& m) {
   }
 }
 
-std::string read_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError({path, 0, 0, ""}, "cannot read the file: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, 0, ""}, std::string("cannot read the file: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError({path, 0, 0, ""}, "error while reading the file");
-  return ss.str();
-}
 
 }  // namespace
 
@@ -740,6 +731,8 @@ Model read_deck_text(const std::string& text, const std::string& file) {
   return m;
 }
 
-Model read_deck(const std::string& path) { return read_deck_text(read_file(path), path); }
+Model read_deck(const std::string& path) {
+  return read_deck_text(read_file_bounded(path, kMaxDeckBytes, "deck"), path);
+}
 
 }  // namespace tunica
