@@ -42,7 +42,7 @@ done
 "$tunica" run examples/balloon-sphere-3d.yaml -o results/balloon-sphere-3d -q
 "$python" tools/figures/sphere3d_figures.py results/balloon-sphere-3d docs/figures
 
-"$tunica" run examples/aneurysm.yaml -o results/aneurysm -q
+"$tunica" run examples/aneurysm.yaml --allow-scripts -o results/aneurysm -q
 "$python" tools/figures/aneurysm_figures.py results/aneurysm docs/figures
 
 angio="$tmp/balloon-angioplasty.yaml"

@@ -12,6 +12,8 @@
 #include "fit/fit_command.hpp"
 #include "io/deck.hpp"
 #include "io/reference.hpp"
+#include "mesh/geo_mesher.hpp"
+#include "output/atomic_file.hpp"
 #include "output/restart_file.hpp"
 #include "output/run_writer.hpp"
 #include "output/stop_signal.hpp"
@@ -36,8 +38,9 @@ void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, 
     fail("the run to resume has already completed every step of this deck");
 }
 
-int run(const std::string& deck, std::string out, const std::string& restart, bool quiet) {
-  const tunica::Model model = tunica::read_deck(deck);
+int run(const std::string& deck, std::string out, const std::string& restart, bool quiet,
+        const tunica::ReadOptions& options) {
+  const tunica::Model model = tunica::read_deck(deck, options);
   if (out.empty() && restart.empty()) throw tunica::InputError({deck, 0, 0, ""}, "the output directory (-o) is empty");
   std::unique_ptr<tunica::RestartRecord> resume;
   if (!restart.empty()) {
@@ -72,8 +75,8 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   return 0;
 }
 
-int check(const std::string& deck) {
-  const tunica::Model model = tunica::read_deck(deck);
+int check(const std::string& deck, const tunica::ReadOptions& options) {
+  const tunica::Model model = tunica::read_deck(deck, options);
   int elements = 0;
   for (const auto& p : model.parts) elements += p.num_elements();
   std::printf("%s: valid deck: %zu material(s), %zu part(s), %d node(s), %d element(s), %zu boundary set(s), "
@@ -100,12 +103,26 @@ int main(int argc, char** argv) {
     if (out_opt->count() == 0 && restart_opt->count() == 0) throw CLI::RequiredError("-o,--output or --restart");
   });
   run_cmd->add_flag("-q,--quiet", quiet, "no progress output");
+  tunica::ReadOptions read_options;
+  const char* scripts_help = "mesh the Gmsh scripts (.geo) the deck names; a script can run commands";
+  run_cmd->add_flag("--allow-scripts", read_options.allow_scripts, scripts_help);
   int threads = 0;
   run_cmd->add_option("-j,--threads", threads, "threads of the element loops (default: OMP_NUM_THREADS or all cores); "
                                               "results do not depend on it")
       ->check(CLI::Range(1, 1024));
   auto* check_cmd = app.add_subcommand("check", "validate a deck without solving");
   check_cmd->add_option("deck", deck, "YAML deck")->required();
+  check_cmd->add_flag("--allow-scripts", read_options.allow_scripts, scripts_help);
+  std::string geo, msh;
+  tunica::GeoMeshFormat msh_format;
+  auto* mesh_cmd = app.add_subcommand("mesh", "mesh a Gmsh script (.geo) into a .msh file, which decks then read as data; "
+                                              "the script runs, and can run commands");
+  mesh_cmd->add_option("script", geo, "Gmsh script (.geo)")->required();
+  mesh_cmd->add_option("-o,--output", msh, ".msh file to write")->required();
+  mesh_cmd->add_option("--msh-version", msh_format.version, "format version, 4.1 or 2.2")
+      ->check(CLI::IsMember({4.1, 2.2}))
+      ->capture_default_str();
+  mesh_cmd->add_flag("--binary", msh_format.binary, "binary instead of ASCII");
   auto* ref_cmd = app.add_subcommand("reference", "print the deck reference (Markdown), generated from the declarations");
   tunica::FitCommand fit;
   auto* fit_cmd = app.add_subcommand("fit", "fit material constants to inflation–extension data (docs/fit.md)");
@@ -140,9 +157,14 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) {
       if (threads > 0) omp_set_num_threads(threads);
-      return run(deck, out, restart, quiet);
+      return run(deck, out, restart, quiet, read_options);
     }
-    if (*check_cmd) return check(deck);
+    if (*check_cmd) return check(deck, read_options);
+    if (*mesh_cmd) {
+      tunica::write_file_atomically(msh, tunica::mesh_geo_script(geo, msh_format));
+      if (!quiet) std::printf("%s: meshed into %s\n", geo.c_str(), msh.c_str());
+      return 0;
+    }
     if (*fit_cmd) {
       fit.plot = !no_plot;
       return tunica::run_fit_command(fit, quiet ? nullptr : stdout);

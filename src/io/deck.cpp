@@ -275,10 +275,11 @@ int step_index(const DeckNode& deck, const Params& p, const std::string& key) {
   return found.front();
 }
 
-void read_parts(const DeckNode& deck, Model& m) {
+void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
   const DeckNode parts = deck.required("parts");
   if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
   SurfaceMeshCache cache;
+  cache.allow_scripts = options.allow_scripts;
   bool first = true;
   for (const auto& [name, node] : parts.entries()) {
     const std::string element =
@@ -669,7 +670,7 @@ std::vector<ComponentSpec> deck_sections() {
           step_spec(),      output_spec(), history_spec()};
 }
 
-Model read_deck_text(const std::string& text, const std::string& file) {
+Model read_deck_text(const std::string& text, const std::string& file, const ReadOptions& options) {
   check_deck_limits(text, file);
   YAML::Node root;
   try {
@@ -719,7 +720,7 @@ Model read_deck_text(const std::string& text, const std::string& file) {
       m.solid_materials[name] = st->second.make(p);
     }
   }
-  read_parts(deck, m);
+  read_parts(deck, m, options);
   read_node_sets(deck, m);
   read_boundaries(deck, m);
   read_loads(deck, m);
@@ -731,8 +732,8 @@ Model read_deck_text(const std::string& text, const std::string& file) {
   return m;
 }
 
-Model read_deck(const std::string& path) {
-  return read_deck_text(read_file_bounded(path, kMaxDeckBytes, "deck"), path);
+Model read_deck(const std::string& path, const ReadOptions& options) {
+  return read_deck_text(read_file_bounded(path, kMaxDeckBytes, "deck"), path, options);
 }
 
 }  // namespace tunica

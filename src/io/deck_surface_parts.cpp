@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "assembly/references.hpp"
+#include "core/printable.hpp"
 #include "io/deck_limits.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/mesh_checks.hpp"
@@ -34,7 +35,8 @@ const ComponentSpec& frame_spec() {
 const ComponentSpec& gmsh_mesh_spec() {
   static const ComponentSpec s{
       "mesh", "gmsh",
-      "A physical surface of a Gmsh file: a mesh (.msh) or a geometry (.geo, meshed in 2-D when read). "
+      "A physical surface of a Gmsh file: a mesh (.msh 4.1 or 2.2, ASCII or binary, read as data) or a "
+      "geometry script (.geo, meshed in 2-D when read, only with --allow-scripts: a script can run commands). "
       "Parts that name the same file share its nodes. Its physical curves and points become node sets "
       "under their own names. Linear triangles and quadrilaterals only; their node order gives the "
       "side pressure acts on.",
@@ -128,7 +130,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
       if (!std::filesystem::is_regular_file(path, ec)) mp.fail("file", "no such mesh file: " + path);
       SurfaceMesh sm;
       try {
-        sm = read_gmsh(path, part.frame.view);
+        sm = read_gmsh(path, part.frame.view, cache.allow_scripts);
       } catch (const InputError& e) {
         // Keep the mesh file's own location, and say which deck key asked for it.
         throw InputError(e.where(), e.reason() + fmt::format(" (the mesh of {}:{}, key '{}')", mp.where("file").file,
@@ -154,7 +156,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
     auto s = std::find_if(surfaces.begin(), surfaces.end(), [&](const auto& x) { return x.name == mp.text("surface"); });
     if (s == surfaces.end()) {
       std::string list;
-      for (const auto& x : surfaces) list += (list.empty() ? "" : ", ") + x.name;
+      for (const auto& x : surfaces) list += (list.empty() ? "" : ", ") + printable(x.name);
       mp.fail("surface", "the file has no physical surface '" + mp.text("surface") + "' (it has: " + list + ")");
     }
     if (const std::string why = check_surface(it->second.mesh, *s); !why.empty())

@@ -20,6 +20,7 @@ struct SurfaceMeshCache {
     std::vector<int> global;  ///< per file node
   };
   std::map<std::string, Entry> files;
+  bool allow_scripts = false;  ///< mesh Gmsh scripts (.geo): ReadOptions::allow_scripts
 };
 
 /// Reads the `mesh` and `frame` of a 3-D part into `part` and the model (nodes,

@@ -1,23 +1,27 @@
 #pragma once
-// Gmsh files through the Gmsh SDK: a mesh (.msh, any version Gmsh reads) or a
-// geometry (.geo, meshed in 2-D on reading with the options it sets).
-// Physical surfaces become SurfaceMesh surfaces (their physical names, or
-// "surface_<tag>" if unnamed); physical curves and points become node sets
-// (their names, or "curve_<tag>" / "point_<tag>"). Only linear 3-node
-// triangles and 4-node quadrilaterals are accepted on physical surfaces.
-// Element data views with 3 components (from $ElementData in a .msh file)
-// named `direction_view` give per-element direction-1 vectors.
+// Gmsh files as surface meshes. A .msh file (4.1 or 2.2, ASCII or binary) is data:
+// it is read by Tunica's own reader (msh_parser.hpp, msh_surface.hpp), within size
+// limits, and nothing in it runs. A file that does not begin with $MeshFormat is
+// not read as a mesh, whatever its name. A Gmsh script (.geo) is a program: it is
+// meshed (in a child process, geo_mesher.hpp) only when `allow_scripts` is set,
+// which the command line's --allow-scripts does.
+//
+// Physical surfaces become SurfaceMesh surfaces, physical curves and points node
+// sets; only 3-node triangles and 4-node quadrilaterals are accepted on physical
+// surfaces. An element-data view with 3 components named `direction_view` gives
+// per-element direction-1 vectors.
 #include <string>
 
 #include "mesh/surface_mesh.hpp"
 
 namespace tunica {
 
-/// Reads `path`. Throws InputError (file = path; key = the physical group or
-/// view concerned, when there is one) on an unreadable file, a file without
-/// physical surfaces, unsupported elements on a physical surface, or a
-/// requested direction view that is missing or not 3-component element data.
-/// Nodes not used by any physical surface are dropped and the rest renumbered.
-SurfaceMesh read_gmsh(const std::string& path, const std::string& direction_view = "");
+/// True if `path` names a Gmsh script rather than a mesh (its extension is .geo).
+bool is_gmsh_script(const std::string& path);
+
+/// Reads `path`. Throws InputError (file = path; the line and the tags as written in the
+/// file where they are known; key = the physical group or view concerned) on anything
+/// the readers refuse, and on a script when `allow_scripts` is false.
+SurfaceMesh read_gmsh(const std::string& path, const std::string& direction_view = "", bool allow_scripts = false);
 
 }  // namespace tunica

@@ -19,10 +19,14 @@ struct SurfaceMesh {
     std::vector<std::array<int, 4>> quads;
     /// Optional per-element direction-1 vectors (empty, or one per triangle / quad).
     std::vector<Eigen::Vector3d> triangle_direction, quad_direction;
+    /// Element tags as written in the mesh file (empty for generated meshes), one per triangle / quad.
+    std::vector<long> triangle_tags, quad_tags;
   };
   std::vector<Eigen::Vector3d> nodes;
   std::vector<Surface> surfaces;
   std::map<std::string, std::vector<int>> node_sets;  ///< sorted, unique node indices
+  /// Node tags as written in the mesh file (empty for generated meshes), one per node.
+  std::vector<long> node_tags;
 };
 
 }  // namespace tunica

@@ -16,7 +16,9 @@ using namespace tunica::test;
 
 TEST(Aneurysm, ConvergesAndItsStraightSegmentsObeyLaplacesLaw) {
   const std::string deck = std::string(TUNICA_SOURCE_DIR) + "/examples/aneurysm.yaml";
-  const Model m = read_deck(deck);
+  ReadOptions scripts;
+  scripts.allow_scripts = true;  // the example meshes examples/meshes/aneurysm.geo
+  const Model m = read_deck(deck, scripts);
   Capture cap;
   Analysis a(m);
   a.run(cap);

@@ -29,7 +29,7 @@ steps:
 output: {{vtk: false}}
 )",
                                     mesh),
-                        "curvature.yaml");
+                        "curvature.yaml", ReadOptions{.allow_scripts = true});  // one test meshes a .geo
 }
 
 }  // namespace

@@ -5,7 +5,7 @@ Usage: /usr/bin/python3 tools/figures/aneurysm_figures.py RESULT_DIR OUT_DIR
 
 Reads RESULT_DIR/history.csv (columns pressure_mmHg, volume_mm3, ...) and the
 first and last RESULT_DIR/vtk/surface_*.vtu written by
-`tunica run examples/aneurysm.yaml -o RESULT_DIR`, and writes to OUT_DIR
+`tunica run examples/aneurysm.yaml --allow-scripts -o RESULT_DIR`, and writes to OUT_DIR
 
   aneurysm-stress.png           deformed wall at the last increment coloured by the
                                 maximum in-plane principal Cauchy stress (kPa), cut
