@@ -160,7 +160,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
       mp.fail("surface", "the file has no physical surface '" + mp.text("surface") + "' (it has: " + list + ")");
     }
     if (const std::string why = check_surface(it->second.mesh, *s); !why.empty())
-      mp.fail("surface", "physical surface '" + s->name + "': " + why);
+      mp.fail("surface", "physical surface '" + printable(s->name) + "' of " + path + ": " + why);
     add_blocks(*s, it->second.global, part.frame.type == FrameRule::Type::mesh, part);
   } else {
     auto gen = surface_generator_types().find(type);

@@ -10,8 +10,11 @@ namespace tunica {
 
 namespace {
 
-/// Element e of the surface as a list of node indices (triangles first, then quads).
+/// Element e of the surface as a list of node indices (triangles first, then quads), and
+/// how messages name elements and nodes: by the tags of the mesh file where the mesh has
+/// them, else by 0-based index.
 struct ElementView {
+  const SurfaceMesh& m;
   const SurfaceMesh::Surface& s;
   int count() const { return static_cast<int>(s.triangles.size() + s.quads.size()); }
   std::vector<int> nodes(int e) const {
@@ -21,16 +24,20 @@ struct ElementView {
   }
   std::string name(int e) const {
     const int nt = static_cast<int>(s.triangles.size());
+    if (e < nt && static_cast<int>(s.triangle_tags.size()) == nt) return fmt::format("element {} (a triangle)", s.triangle_tags[e]);
+    if (e >= nt && s.quad_tags.size() == s.quads.size()) return fmt::format("element {} (a quadrilateral)", s.quad_tags[e - nt]);
     return e < nt ? fmt::format("element {} (triangle {})", e, e)
                   : fmt::format("element {} (quadrilateral {})", e, e - nt);
   }
+  long node(int k) const {
+    return k >= 0 && static_cast<std::size_t>(k) < m.node_tags.size() ? m.node_tags[k] : k;
+  }
+  std::string list(const std::vector<int>& v) const {
+    std::string out;
+    for (int k : v) out += (out.empty() ? "" : ", ") + std::to_string(node(k));
+    return "[" + out + "]";
+  }
 };
-
-std::string node_list(const std::vector<int>& v) {
-  std::string out;
-  for (int k : v) out += (out.empty() ? "" : ", ") + std::to_string(k);
-  return "[" + out + "]";
-}
 
 /// One traversal of an edge by an element: the element, and whether it goes from the
 /// lower to the higher node index.
@@ -42,7 +49,7 @@ struct Use {
 }  // namespace
 
 std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s) {
-  const ElementView ev{s};
+  const ElementView ev{mesh, s};
   const std::string where = "surface '" + s.name + "': ";
   const long num_nodes = static_cast<long>(mesh.nodes.size());
   const int ne = ev.count();
@@ -54,11 +61,11 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
     for (int k : v)
       if (k < 0 || k >= num_nodes)
         return where + fmt::format("{} has node index {} outside the mesh (nodes 0 to {}); its nodes are {}",
-                                   ev.name(e), k, num_nodes - 1, node_list(v));
+                                   ev.name(e), k, num_nodes - 1, ev.list(v));
     for (std::size_t a = 0; a < v.size(); ++a)
       for (std::size_t b = a + 1; b < v.size(); ++b)
         if (v[a] == v[b])
-          return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), v[a], node_list(v));
+          return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), ev.node(v[a]), ev.list(v));
   }
 
   // 2. Degenerate elements. The area vector of a polygon x_0 … x_{m−1} is
@@ -81,7 +88,7 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
     const double tol = 1e-12 * longest2;
     if (!(area.norm() > tol))  // also catches NaN coordinates
       return where + fmt::format("{} is degenerate (area {:.3g}, longest edge {:.3g}); its nodes are {}", ev.name(e),
-                                 area.norm(), std::sqrt(longest2), node_list(v));
+                                 area.norm(), std::sqrt(longest2), ev.list(v));
     if (m == 4) {
       const Eigen::Vector3d normal = area.normalized();
       for (int k = 0; k < 4; ++k) {
@@ -91,7 +98,7 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
         if (!(corner > tol))
           return where + fmt::format("{} is degenerate: its corner at node {} is flat or re-entrant (not a convex "
                                      "quadrilateral); its nodes are {}",
-                                     ev.name(e), v[k], node_list(v));
+                                     ev.name(e), ev.node(v[k]), ev.list(v));
       }
     }
   }
@@ -109,10 +116,10 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
       uses.push_back({e, a < b});
       if (uses.size() > 2) {
         std::string list;
-        for (const auto& u : uses) list += (list.empty() ? "" : ", ") + std::to_string(u.element);
+        for (const auto& u : uses) list += (list.empty() ? "" : ", ") + ev.name(u.element);
         return where + fmt::format("the edge between nodes {} and {} is shared by more than two elements ({}): "
                                    "the surface is not a manifold",
-                                   std::min(a, b), std::max(a, b), list);
+                                   ev.node(std::min(a, b)), ev.node(std::max(a, b)), list);
       }
     }
   }
@@ -161,7 +168,7 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
         } else if (flip[f] != want) {
           return where + fmt::format("the surface cannot be oriented consistently (a Möbius-like patch): {} and {} "
                                      "across the edge between nodes {} and {}",
-                                     ev.name(e), ev.name(f), a, b);
+                                     ev.name(e), ev.name(f), ev.node(a), ev.node(b));
         }
       }
     }
@@ -183,11 +190,11 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
       }
     std::string across = neighbour >= 0 ? fmt::format(" (it traverses the edge from node {} to node {} in the same "
                                                       "direction as its neighbour {})",
-                                                      a, b, ev.name(neighbour))
+                                                      ev.node(a), ev.node(b), ev.name(neighbour))
                                         : "";
     return where + fmt::format("{} is inverted: its normal is opposite to its neighbours'{}, so the orientation "
                                "is not consistent ({} of {} connected elements inverted; nodes {})",
-                               ev.name(e), across, inverted.size(), patch.size(), node_list(ev.nodes(e)));
+                               ev.name(e), across, inverted.size(), patch.size(), ev.list(ev.nodes(e)));
   }
   return "";
 }

@@ -33,6 +33,7 @@ public:
     header();
     std::set<std::string> seen;
     for (;;) {
+      skip_space();  // between sections: text, also in binary files
       const int at = line_;
       const std::string_view t = token();
       if (t.empty()) break;
@@ -49,6 +50,8 @@ public:
       else if (name == "Nodes") v4() ? nodes4() : nodes2();
       else if (name == "Elements") v4() ? elements4() : elements2();
       else if (name == "ElementData") element_data();
+      else if (name == "PartitionedEntities")
+        fail("a partitioned mesh is not read: save it unpartitioned (Gmsh API: gmsh::model::mesh::unpartition())", at);
       else if (name.rfind("End", 0) == 0) fail(fmt::format("{} without its opening section", section_), at);
       else skip_section(name);
       section_.clear();
@@ -118,6 +121,7 @@ private:
     }
   }
   void expect(std::string_view word) {
+    skip_space();  // the end markers follow text or the end of binary data
     const int at = line_;
     const std::string_view t = token();
     if (t != word)
@@ -184,6 +188,7 @@ private:
     section_ = "$MeshFormat";
     section_line_ = 1;
     token();
+    skip_space();
     const int at = line_;
     const std::string_view vt = required_token("the format version");
     if (vt == "4.1") f_.version = 4.1;
@@ -227,6 +232,7 @@ private:
     const long n = integer("the number of physical names", 0, 1'000'000);
     fits(n, 6, "physical names");
     for (long i = 0; i < n; ++i) {
+      skip_space();
       const int at = line_;
       const int dim = static_cast<int>(integer("the dimension of a physical group", 0, 3));
       const int tag = static_cast<int>(integer("the tag of a physical group", INT_MIN, INT_MAX));
@@ -244,6 +250,7 @@ private:
     for (int d = 0; d < 4; ++d) {
       fits(n[d], f_.binary ? 4 + 8 * (d == 0 ? 3 : 6) + 8 : 10, "entities");
       for (long i = 0; i < n[d]; ++i) {
+        skip_space_ascii();
         const int at = line_;
         const int tag = static_cast<int>(int4("an entity tag", INT_MIN, INT_MAX));
         for (int k = 0; k < (d == 0 ? 3 : 6); ++k) real4("an entity's bounding coordinate");
@@ -372,6 +379,7 @@ private:
     tag4("the largest element tag");
     fits(blocks, f_.binary ? 20 : 8, "element blocks");
     for (long b = 0; b < blocks; ++b) {
+      skip_space_ascii();
       const int at_block = line_;
       const int dim = static_cast<int>(int4("the dimension of an element block's entity", 0, 3));
       const int entity = static_cast<int>(int4("the tag of an element block's entity", INT_MIN, INT_MAX));

@@ -3,8 +3,10 @@
 // Meshes are small hand-written Gmsh 2.2 files: a unit square of two triangles
 // in the plane z = 0, broken in one way per test.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -80,11 +82,14 @@ TEST(BadMeshes, TheGoodSquareIsValid) {
 }
 
 TEST(BadMeshes, InvertedElementIsNamed) {
-  expect_error("inverted", msh("2 2 2 1 1 1 2 3\n3 2 2 1 1 1 4 3\n", 2), "", "", "parts.wall.mesh.surface", "inverted");
+  // Named by the mesh file and its own element and node tags.
+  expect_error("inverted", msh("2 2 2 1 1 1 2 3\n3 2 2 1 1 1 4 3\n", 2), "", "", "parts.wall.mesh.surface",
+               "inverted/square.msh: surface 'wall': element 3 (a triangle) is inverted");
 }
 
 TEST(BadMeshes, DegenerateElementIsNamed) {
-  expect_error("degenerate", msh(kGood + "4 2 2 1 1 1 2 5\n", 3), "", "", "parts.wall.mesh.surface", "degenerate");
+  expect_error("degenerate", msh(kGood + "4 2 2 1 1 1 2 5\n", 3), "", "", "parts.wall.mesh.surface",
+               "element 4 (a triangle) is degenerate (area 0, longest edge 2); its nodes are [1, 2, 5]");
 }
 
 TEST(BadMeshes, MissingPhysicalSurfaceIsNamed) {
@@ -121,4 +126,64 @@ TEST(BadMeshes, AxisymmetricAnd3dPartsDoNotMix) {
 TEST(BadMeshes, VolumeControlOfAnUndefinedLoad) {
   expect_error("volume-control", msh(kGood, 2), "{increments: 1, set: {p: 0.001}}",
                "{increments: 1, volume_control: {load: q, volume: 1}}", "steps[0].volume_control.load", "undefined pressure load 'q'");
+}
+
+TEST(BadMeshes, ADeckNamingAScriptIsRefusedUnlessScriptsAreAllowed) {
+  const fs::path dir = scratch() / "script";
+  fs::create_directories(dir);
+  const fs::path marker = dir / "script-ran";
+  fs::remove(marker);
+  // The square as a script that also runs a command.
+  std::ofstream(dir / "square.geo") << "System \"touch " << marker.string() << "\";\n"
+                                    << "Point(1) = {0, 0, 0, 1}; Point(2) = {1, 0, 0, 1}; Point(3) = {1, 1, 0, 1};\n"
+                                       "Point(4) = {0, 1, 0, 1}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+                                       "Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                                       "Physical Surface(\"wall\") = {1}; Physical Curve(\"edge\") = {1};\n";
+  std::ofstream(dir / "deck.yaml") << replace(kDeck, "file: square.msh", "file: square.geo");
+  Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("square.geo: this is a Gmsh script (.geo), which can run commands: Tunica meshes one only "
+                          "with --allow-scripts"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("key 'parts.wall.mesh.file'"), std::string::npos) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  EXPECT_FALSE(fs::exists(marker)) << "a refused script ran";
+  o = run_cli("run " + (dir / "deck.yaml").string() + " -q -o " + (dir / "out").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_FALSE(fs::exists(marker)) << "a refused script ran";
+  // Allowed: it runs, and the deck is valid.
+  o = run_cli("check --allow-scripts " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_TRUE(fs::exists(marker));
+  // `tunica mesh` makes a .msh of it that the deck reads as data.
+  fs::remove(marker);
+  o = run_cli("mesh " + (dir / "square.geo").string() + " -o " + (dir / "square.msh").string() + " --binary");
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_TRUE(fs::exists(marker));
+  std::ofstream(dir / "deck.yaml") << kDeck;
+  o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}
+
+TEST(BadMeshes, ADeviceOrAHugeHeaderIsRefusedAtOnce) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Outcome o = run_cli("check /dev/zero");
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("/dev/zero: cannot read the deck: it is not a regular file"), std::string::npos) << o.output;
+  // A mesh whose header announces 10^9 nodes.
+  const fs::path dir = scratch() / "huge";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1000000000 1 1000000000\n";
+  std::ofstream(dir / "deck.yaml") << kDeck;
+  o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("square.msh:5: the file announces 1000000000 nodes; at most 10000000 are allowed"),
+            std::string::npos)
+      << o.output;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+  // The largest child of this test process (CTest runs each test in a process of its own).
+  struct rusage children {};
+  getrusage(RUSAGE_CHILDREN, &children);
+  EXPECT_LT(children.ru_maxrss, 100 * 1024) << "kB";
 }

@@ -3,10 +3,12 @@
 // other exception, crash or leak (this suite also runs under ASan + UBSan).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "../support/capture.hpp"
 #include "fit/inflation_data.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "output/restart_file.hpp"
 
 namespace fs = std::filesystem;
@@ -53,6 +55,21 @@ TEST(FuzzRegressions, FitDataInputsAreReadOrRefusedWithAnInputError) {
     try {
       tunica::read_inflation_data(f.string());
     } catch (const tunica::InputError&) {
+    }
+  }
+}
+
+TEST(FuzzRegressions, MshInputsAreReadOrRefusedWithAnInputError) {
+  const auto files = inputs("msh");
+  EXPECT_GE(files.size(), 9u);
+  for (const auto& f : files) {
+    for (const char* view : {"", "fibre"}) {
+      try {
+        tunica::read_gmsh(f.string(), view);
+      } catch (const tunica::InputError& e) {
+        const std::string m = e.what();
+        EXPECT_TRUE(std::all_of(m.begin(), m.end(), [](unsigned char c) { return c >= 0x20 && c < 0x7f; })) << m;
+      }
     }
   }
 }

@@ -101,7 +101,8 @@ TEST(MeshChecks, EdgeSharedByThreeElements) {
   SurfaceMesh m = grid();
   m.nodes.emplace_back(0.5, 0.5, 1.0);  // a fin on the edge 0–5
   m.surfaces[0].triangles.push_back({0, 5, static_cast<int>(m.nodes.size()) - 1});
-  expect_message(m, {"edge between nodes 0 and 5 is shared by more than two elements (0, 1, 12)", "not a manifold"});
+  expect_message(m, {"edge between nodes 0 and 5 is shared by more than two elements (element 0 (triangle 0), element 1 "
+                     "(triangle 1), element 12 (triangle 12))", "not a manifold"});
 }
 
 TEST(MeshChecks, EmptySurface) {

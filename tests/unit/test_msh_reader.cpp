@@ -227,6 +227,9 @@ TEST(MshReader, UnsupportedVersionsAndByteOrderNameTheFix) {
   EXPECT_TRUE(contains(e.reason(), "save the mesh as version 4.1 or 2.2")) << e.what();
   e = input_error([&] { from_text(std::string("$MeshFormat\n4.1 1 8\n\0\0\0\1\n$EndMeshFormat\n", 33)); });
   EXPECT_TRUE(contains(e.reason(), "another byte order")) << e.what();
+  e = input_error([&] { from_text("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PartitionedEntities\n1\n$EndPartitionedEntities\n"); });
+  EXPECT_EQ(e.where().line, 4);
+  EXPECT_TRUE(contains(e.reason(), "a partitioned mesh is not read")) << e.what();
 }
 
 TEST(MshReader, HugeCountsAreRefusedBeforeAllocating) {
