@@ -13,6 +13,7 @@
 #include "io/deck.hpp"
 #include "io/reference.hpp"
 #include "mesh/geo_mesher.hpp"
+#include "mesh/gmsh_reader.hpp"
 #include "output/atomic_file.hpp"
 #include "output/restart_file.hpp"
 #include "output/run_writer.hpp"
@@ -83,6 +84,32 @@ int check(const std::string& deck, const tunica::ReadOptions& options) {
               "%zu load(s), %zu step(s), %zu history column(s)\n",
               deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,
               model.boundaries.size(), model.loads.size(), model.steps.size(), model.output.history.size());
+  return 0;
+}
+
+/// `tunica mesh`: meshes a Gmsh script into a .msh file that Tunica's reader accepts.
+int mesh(const std::string& geo, const std::string& msh, const tunica::GeoMeshFormat& format) {
+  namespace fs = std::filesystem;
+  const auto fail = [](const std::string& file, const std::string& what) {
+    throw tunica::InputError({file, 0, 0, ""}, what);
+  };
+  if (!tunica::is_gmsh_script(geo))
+    fail(geo, "tunica mesh runs a Gmsh script, and this file is not named .geo (a .msh needs no meshing: decks "
+              "read it as it is)");
+  if (fs::path(msh).extension() != ".msh") fail(msh, "the output of tunica mesh must be named .msh");
+  std::error_code ec;
+  if (fs::exists(msh, ec) && !fs::is_regular_file(msh, ec))
+    fail(msh, "the output exists and is not a regular file (a device, pipe, socket or directory)");
+  if (fs::exists(msh, ec) && fs::equivalent(geo, msh, ec)) fail(msh, "the output is the script itself");
+  const std::string bytes = tunica::mesh_geo_script(geo, format);
+  // What it wrote must be a mesh that decks can use: refused here, not when a deck reads it.
+  try {
+    tunica::read_script_mesh(geo, bytes);
+  } catch (const tunica::InputError& e) {
+    throw tunica::InputError(e.where(), e.reason() + "; nothing was written");
+  }
+  tunica::write_file_atomically(msh, bytes);
+  std::printf("%s: meshed into %s\n", geo.c_str(), msh.c_str());
   return 0;
 }
 
@@ -160,11 +187,7 @@ int main(int argc, char** argv) {
       return run(deck, out, restart, quiet, read_options);
     }
     if (*check_cmd) return check(deck, read_options);
-    if (*mesh_cmd) {
-      tunica::write_file_atomically(msh, tunica::mesh_geo_script(geo, msh_format));
-      if (!quiet) std::printf("%s: meshed into %s\n", geo.c_str(), msh.c_str());
-      return 0;
-    }
+    if (*mesh_cmd) return mesh(geo, msh, msh_format);
     if (*fit_cmd) {
       fit.plot = !no_plot;
       return tunica::run_fit_command(fit, quiet ? nullptr : stdout);

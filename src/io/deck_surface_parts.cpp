@@ -127,7 +127,9 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
     auto it = cache.files.find(key);
     if (it == cache.files.end()) {
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(path, ec)) mp.fail("file", "no such mesh file: " + path);
+      if (!std::filesystem::exists(path, ec)) mp.fail("file", "no such mesh file: " + path);
+      if (!std::filesystem::is_regular_file(path, ec))
+        mp.fail("file", "the mesh file " + path + " is not a regular file (a device, pipe, socket or directory)");
       SurfaceMesh sm;
       try {
         sm = read_gmsh(path, part.frame.view, cache.allow_scripts);
@@ -160,7 +162,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
       mp.fail("surface", "the file has no physical surface '" + mp.text("surface") + "' (it has: " + list + ")");
     }
     if (const std::string why = check_surface(it->second.mesh, *s); !why.empty())
-      mp.fail("surface", "physical surface '" + printable(s->name) + "' of " + path + ": " + why);
+      mp.fail("surface", path + ": " + why);  // `why` names the surface
     add_blocks(*s, it->second.global, part.frame.type == FrameRule::Type::mesh, part);
   } else {
     auto gen = surface_generator_types().find(type);

@@ -7,6 +7,7 @@
 #include "mesh/geo_mesher.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <fmt/format.h>
 #include <gmsh.h>
 #include <sys/wait.h>
@@ -31,6 +32,12 @@ namespace tunica {
 namespace {
 
 std::mutex gmsh_mutex;  // one child at a time: the temporary folder and the pipe are per call anyway
+
+/// The parent received SIGINT or SIGTERM while Gmsh ran: thrown after the child has been
+/// ended, so that the temporary folder is removed on the way out; re-raised then.
+struct SignalDuringMeshing {
+  int signal;
+};
 
 /// A failure inside the child: its text goes to the parent.
 struct ChildFailure {
@@ -112,6 +119,33 @@ int child_main(const std::string& path, const std::string& out, const GeoMeshFor
   return 2;
 }
 
+/// SIGINT / SIGTERM while Gmsh runs: remembered here, so that the parent can end the
+/// child and remove the temporary folder before it lets the signal take effect.
+volatile std::sig_atomic_t pending_signal = 0;
+extern "C" void remember_signal(int sig) { pending_signal = sig; }
+
+/// Installs remember_signal for SIGINT and SIGTERM (without SA_RESTART, so that a blocked
+/// read or waitpid returns EINTR) and restores the previous handlers on exit.
+class SignalGuard {
+public:
+  SignalGuard() {
+    pending_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = remember_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~SignalGuard() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+
+private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
 /// A temporary folder, removed on every exit.
 struct TempDir {
   std::string path;
@@ -131,7 +165,7 @@ struct TempDir {
 
 }  // namespace
 
-std::string mesh_geo_script(const std::string& path, const GeoMeshFormat& format) {
+static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& format) {
   const auto fail = [&](const std::string& what, int line = 0) -> void {
     throw InputError(SourceLocation{path, line, 0, ""}, what);
   };
@@ -145,6 +179,8 @@ std::string mesh_geo_script(const std::string& path, const GeoMeshFormat& format
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
   std::fflush(nullptr);
+  const pid_t parent = ::getpid();
+  SignalGuard signals;
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
@@ -152,22 +188,43 @@ std::string mesh_geo_script(const std::string& path, const GeoMeshFormat& format
     throw std::runtime_error(std::string("cannot start the Gmsh process: ") + std::strerror(errno));
   }
   if (pid == 0) {
+    // The child ends with its parent, whatever ends the parent.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(3);
+    ::setpgid(0, 0);  // a group of its own, with the commands the script runs: ended together
+    struct sigaction dfl {};
+    dfl.sa_handler = SIG_DFL;
+    sigaction(SIGINT, &dfl, nullptr);
+    sigaction(SIGTERM, &dfl, nullptr);
     ::close(fds[0]);
     ::_exit(child_main(path, out, format, fds[1]));
   }
   ::close(fds[1]);
+  ::setpgid(pid, pid);  // also here: whichever of the two runs first
   std::string message;
   char buf[4096];
+  int status = 0;
+  const auto stop_child_if_signalled = [&] {
+    if (!pending_signal) return;
+    ::kill(-pid, SIGKILL);
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    ::close(fds[0]);
+    throw SignalDuringMeshing{pending_signal};
+  };
   for (;;) {
     const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    stop_child_if_signalled();
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
     if (message.size() < 65536) message.append(buf, static_cast<std::size_t>(n));
   }
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  for (;;) {
+    const pid_t r = ::waitpid(pid, &status, 0);
+    stop_child_if_signalled();
+    if (r >= 0 || errno != EINTR) break;
   }
+  ::close(fds[0]);
   if (WIFSIGNALED(status))
     fail(fmt::format("Gmsh stopped with signal {} ({}) while meshing the script", WTERMSIG(status),
                      strsignal(WTERMSIG(status))));
@@ -184,7 +241,21 @@ std::string mesh_geo_script(const std::string& path, const GeoMeshFormat& format
     // One line, printable: the message is Gmsh's, which may quote the script.
     fail(printable(message, 400), line);
   }
+  std::error_code ec;
+  if (!std::filesystem::exists(out, ec))
+    fail("the script ended before Gmsh wrote a mesh (does it call Exit, or define no surface?)");
   return read_file_bounded(out, kMaxMshBytes, "mesh Gmsh wrote");
+}
+
+std::string mesh_geo_script(const std::string& path, const GeoMeshFormat& format) {
+  try {
+    return mesh_in_child(path, format);
+  } catch (const SignalDuringMeshing& i) {
+    // The child has ended and the temporary folder is gone: let the signal take effect
+    // as it would have (the previous handler, or the default action).
+    std::raise(i.signal);
+    throw InputError(SourceLocation{path, 0, 0, ""}, "interrupted while Gmsh meshed the script");
+  }
 }
 
 }  // namespace tunica

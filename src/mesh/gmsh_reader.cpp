@@ -23,20 +23,20 @@ SurfaceMesh read_gmsh(const std::string& path, const std::string& direction_view
     if (!allow_scripts)
       throw InputError(SourceLocation{path, 0, 0, ""},
                        "this is a Gmsh script (.geo), which can run commands: Tunica meshes one only with "
-                       "--allow-scripts (tunica run/check DECK --allow-scripts), or mesh it yourself "
-                       "(gmsh -2 FILE.geo -o FILE.msh) and name the .msh");
-    const std::string bytes = mesh_geo_script(path);
-    try {
-      return surface_mesh_from_msh(parse_msh(bytes, path), path, direction_view);
-    } catch (const InputError& e) {
-      // The lines are those of the mesh Gmsh wrote, not of the script: leave them out.
-      SourceLocation where = e.where();
-      where.line = 0;
-      throw InputError(where, e.reason() + " (in the mesh Gmsh made of the script)");
-    }
+                       "--allow-scripts (tunica run/check DECK --allow-scripts), or mesh it once with "
+                       "tunica mesh FILE.geo -o FILE.msh and name the .msh");
+    return read_script_mesh(path, mesh_geo_script(path), direction_view);
   }
   const std::string bytes = read_file_bounded(path, kMaxMshBytes, "mesh file");
   return surface_mesh_from_msh(parse_msh(bytes, path), path, direction_view);
+}
+
+SurfaceMesh read_script_mesh(const std::string& script, const std::string& msh, const std::string& direction_view) {
+  try {
+    return surface_mesh_from_msh(parse_msh(msh, script, false), script, direction_view);
+  } catch (const InputError& e) {
+    throw InputError(e.where(), e.reason() + " (in the mesh Gmsh made of the script)");
+  }
 }
 
 }  // namespace tunica

@@ -24,4 +24,8 @@ bool is_gmsh_script(const std::string& path);
 /// the readers refuse, and on a script when `allow_scripts` is false.
 SurfaceMesh read_gmsh(const std::string& path, const std::string& direction_view = "", bool allow_scripts = false);
 
+/// The surface mesh of `msh`, the bytes of the .msh file Gmsh made of the script `script`.
+/// Errors name the script and no lines (they would be those of a file the user never saw).
+SurfaceMesh read_script_mesh(const std::string& script, const std::string& msh, const std::string& direction_view = "");
+
 }  // namespace tunica

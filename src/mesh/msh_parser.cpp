@@ -27,7 +27,8 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' |
 
 class Parser {
 public:
-  Parser(std::string_view bytes, const std::string& path) : b_(bytes), path_(path) {}
+  Parser(std::string_view bytes, const std::string& path, bool lines)
+      : b_(bytes), path_(path), lines_known_(lines), section_line_known_(lines) {}
 
   MshFile parse() {
     header();
@@ -66,9 +67,9 @@ private:
 
   // ---------------------------------------------------------------- errors
   [[noreturn]] void fail(const std::string& what, int line = -1) const {
-    const int l = line >= 0 ? line : (lines_known_ ? line_ : 0);
+    const int l = !section_line_known_ ? 0 : line >= 0 ? line : (lines_known_ ? line_ : 0);
     std::string where;
-    if (!section_.empty()) where = (l == 0 && section_line_ > 0 ? fmt::format(" (in {} from line {})", section_, section_line_)
+    if (!section_.empty()) where = (l == 0 && section_line_ > 0 && section_line_known_ ? fmt::format(" (in {} from line {})", section_, section_line_)
                                                                  : fmt::format(" (in {})", section_));
     throw InputError(SourceLocation{path_, l, 0, ""}, what + where);
   }
@@ -180,11 +181,27 @@ private:
   // ---------------------------------------------------------------- sections
   void header() {
     const std::string_view first = b_.substr(0, std::min<std::size_t>(b_.size(), 11));
-    if (first != "$MeshFormat")
-      fail(fmt::format("not a Gmsh mesh: a .msh file must begin with $MeshFormat, this one begins with '{}'. "
-                       "Gmsh scripts (.geo) are read only with --allow-scripts",
-                       printable(b_.substr(0, 20))),
+    if (first != "$MeshFormat") {
+      // Say what the file looks like, and what to do about it.
+      std::string hint;
+      const std::size_t text = b_.find_first_not_of(" \t\r\n");
+      if (b_.substr(0, 3) == "\xEF\xBB\xBF")
+        hint = "; it starts with a UTF-8 byte-order mark: save it without one";
+      else if (text != std::string_view::npos && text > 0 && b_.substr(text, 11) == "$MeshFormat")
+        hint = "; remove the blank space before $MeshFormat";
+      else if (b_.substr(0, 5) == "solid" || (b_.size() >= 84 && b_.size() == 84 + 50 * static_cast<std::size_t>(
+                                                                   static_cast<unsigned char>(b_[80]) |
+                                                                   static_cast<unsigned char>(b_[81]) << 8 |
+                                                                   static_cast<unsigned char>(b_[82]) << 16 |
+                                                                   static_cast<std::size_t>(static_cast<unsigned char>(b_[83])) << 24)))
+        hint = "; it looks like an STL surface: write a .geo with Merge \"FILE.stl\"; Physical Surface(\"wall\") = "
+               "{1}; and turn it into a .msh with tunica mesh FILE.geo -o FILE.msh";
+      else
+        hint = "; a Gmsh script must be named .geo, and is meshed only with --allow-scripts";
+      fail(fmt::format("not a Gmsh mesh: a .msh file must begin with $MeshFormat, this one begins with '{}'{}",
+                       printable(b_.substr(0, 20)), hint),
            1);
+    }
     section_ = "$MeshFormat";
     section_line_ = 1;
     token();
@@ -322,7 +339,7 @@ private:
         MshFile::Node& nd = f_.nodes[first + static_cast<std::size_t>(i)];
         if (!f_.binary) {
           skip_space();
-          nd.line = line_;  // the line of its coordinates
+          nd.line = lines_known_ ? line_ : 0;  // the line of its coordinates
         }
         for (int k = 0; k < 3; ++k) nd.x(k) = real4("a node coordinate");
         for (int k = 0; k < extra; ++k) real4("a parametric coordinate");
@@ -446,7 +463,7 @@ private:
 
   void element_data() {
     MshFile::ElementData d;
-    d.line = section_line_;
+    d.line = section_line_known_ ? section_line_ : 0;
     const long nstr = integer("the number of string tags", 0, 100);
     for (long i = 0; i < nstr; ++i) {
       std::string s = quoted("a string tag");
@@ -484,6 +501,7 @@ private:
   std::size_t pos_ = 0;
   int line_ = 1;
   bool lines_known_ = true;
+  bool section_line_known_ = true;  ///< lines are reported at all
   std::string section_;
   int section_line_ = 0;
   MshFile f_;
@@ -491,6 +509,8 @@ private:
 
 }  // namespace
 
-MshFile parse_msh(std::string_view bytes, const std::string& path) { return Parser(bytes, path).parse(); }
+MshFile parse_msh(std::string_view bytes, const std::string& path, bool lines) {
+  return Parser(bytes, path, lines).parse();
+}
 
 }  // namespace tunica

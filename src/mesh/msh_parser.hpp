@@ -22,6 +22,8 @@ constexpr std::size_t kMaxMshBytes = 2'000'000'000;  ///< 2 GB (line numbers sta
 /// a file that does not begin with $MeshFormat, an unsupported version, a malformed or
 /// truncated section, a count beyond the limits or the file's size, an unknown element
 /// type, a missing $Nodes or $Elements section, or a section given twice.
-MshFile parse_msh(std::string_view bytes, const std::string& path);
+/// With `lines` false, no line numbers are recorded or reported (for a file the user
+/// did not write, such as the mesh Gmsh makes of a script).
+MshFile parse_msh(std::string_view bytes, const std::string& path, bool lines = true);
 
 }  // namespace tunica

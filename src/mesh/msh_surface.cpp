@@ -312,10 +312,17 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
       if (c == compact.end()) continue;
       for (const Key& key : g->second) sets[key].push_back(c->second);
     }
+  std::map<std::string, Key> named;  // node-set name -> the group that took it
   for (auto& [key, set] : sets) {
+    const std::string name = group_name(f, key);
+    if (auto [it, fresh] = named.emplace(name, key); !fresh)
+      fail(fmt::format("physical groups {} (dimension {}) and {} (dimension {}) are both named '{}': a node set needs a "
+                       "name of its own",
+                       it->second.second, it->second.first, key.second, key.first, printable(name)),
+           0, printable(name));
     std::sort(set.begin(), set.end());
     set.erase(std::unique(set.begin(), set.end()), set.end());
-    mesh.node_sets[group_name(f, key)] = std::move(set);
+    mesh.node_sets[name] = std::move(set);
   }
 
   // Per-element direction-1 vectors from a 3-component element-data view.

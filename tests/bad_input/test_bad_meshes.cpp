@@ -187,3 +187,65 @@ TEST(BadMeshes, ADeviceOrAHugeHeaderIsRefusedAtOnce) {
   getrusage(RUSAGE_CHILDREN, &children);
   EXPECT_LT(children.ru_maxrss, 100 * 1024) << "kB";
 }
+
+TEST(BadMeshes, TunicaMeshRefusesWhatIsNotAScriptOrNotAMeshFileAndBadResults) {
+  const fs::path dir = scratch() / "mesh-command";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << msh(kGood, 2);
+  Outcome o = run_cli("mesh " + (dir / "square.msh").string() + " -o " + (dir / "out.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("this file is not named .geo"), std::string::npos) << o.output;
+  const std::string square = "Point(1) = {0, 0, 0, 1}; Point(2) = {1, 0, 0, 1}; Point(3) = {1, 1, 0, 1};\n"
+                             "Point(4) = {0, 1, 0, 1}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+                             "Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                             "Physical Surface(\"wall\") = {1};\n";
+  std::ofstream(dir / "square.geo") << square;
+  o = run_cli("mesh " + (dir / "square.geo").string() + " -o " + (dir / "square.geo").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("must be named .msh"), std::string::npos) << o.output;
+  const fs::path fifo = dir / "fifo.msh";
+  fs::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  o = run_cli("mesh " + (dir / "square.geo").string() + " -o " + fifo.string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("not a regular file"), std::string::npos) << o.output;
+  // A script whose mesh decks could not use: refused, nothing written.
+  std::ofstream(dir / "order2.geo") << "Mesh.ElementOrder = 2;\n" << square;
+  o = run_cli("mesh " + (dir / "order2.geo").string() + " -o " + (dir / "order2.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("order2.geo: key 'wall': physical surface 'wall': element"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("nothing was written"), std::string::npos) << o.output;
+  EXPECT_FALSE(fs::exists(dir / "order2.msh"));
+  // A script that exits before Gmsh writes anything: named, not the temporary file.
+  std::ofstream(dir / "exits.geo") << square << "Exit;\n";
+  o = run_cli("mesh " + (dir / "exits.geo").string() + " -o " + (dir / "exits.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("exits.geo: the script ended before Gmsh wrote a mesh"), std::string::npos) << o.output;
+}
+
+TEST(BadMeshes, TerminatingTunicaMeshEndsGmshAndLeavesNoTemporaryFolder) {
+  const fs::path dir = scratch() / "mesh-sigterm";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "tmp");
+  const fs::path marker = dir / "still-running";
+  std::ofstream(dir / "slow.geo") << "System \"sleep 3; touch " << marker.string() << "\";\nPoint(1) = {0, 0, 0};\n";
+  const std::string cmd = "TMPDIR=" + (dir / "tmp").string() + " " + TUNICA_BINARY + " mesh " +
+                          (dir / "slow.geo").string() + " -o " + (dir / "slow.msh").string() + " & pid=$!; sleep 1; "
+                          "kill -TERM $pid; wait $pid; echo exit $?";
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[256] = {};
+  std::string out;
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  pclose(p);
+  EXPECT_NE(out.find("exit 143"), std::string::npos) << out;
+  EXPECT_TRUE(fs::is_empty(dir / "tmp")) << "the temporary folder was left";
+  ::sleep(4);  // the script's command would have finished by now
+  EXPECT_FALSE(fs::exists(marker)) << "the script's commands went on after tunica was stopped";
+}
+
+TEST(BadMeshes, NodeSetsOfOneNameFromTwoPhysicalGroupsAreRefused) {
+  const std::string two = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 10 \"edge\"\n1 11 \"edge\"\n"
+                          "2 1 \"wall\"\n$EndPhysicalNames\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 2 0 0\n"
+                          "$EndNodes\n$Elements\n4\n1 1 2 10 1 1 2\n5 1 2 11 2 3 4\n" + kGood + "$EndElements\n";
+  expect_error("two-edges", two, "", "", "edge", "physical groups 10 (dimension 1) and 11 (dimension 1) are both named 'edge'");
+}

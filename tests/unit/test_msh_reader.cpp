@@ -323,3 +323,33 @@ TEST(BoundedFile, DevicesAndOversizedFilesAreRefusedAtOnce) {
   EXPECT_EQ(read_file_bounded(write("small", "abc"), 3, "deck"), "abc");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
 }
+
+TEST(MshReader, TheKindsOfFileThatCrashedGmshAreInputErrors) {
+  // Gmsh 4.8 crashed on these (fuzz/regressions/msh/): a 4.1 binary element naming a node
+  // tag that does not exist (a segfault in GModel::getMeshVertexByTag), a 2.2 binary
+  // element block announcing more elements than the section (an assertion in
+  // GModelIO_MSH2.cpp), and a .msh that is a script dividing by zero (SIGFPE).
+  const std::string dir = std::string(TUNICA_SOURCE_DIR) + "/fuzz/regressions/msh/";
+  InputError e = input_error([&] { read_gmsh(dir + "undefined-node-v41-binary.msh"); });
+  EXPECT_TRUE(contains(e.reason(), "names node 1000000000, which the file does not define")) << e.what();
+  e = input_error([&] { read_gmsh(dir + "block-overflow-v22-binary.msh"); });
+  EXPECT_TRUE(contains(e.reason(), "the number of elements that follow is 1001, outside [1, 19]")) << e.what();
+  e = input_error([&] { read_gmsh(dir + "script-divide-by-zero.msh", "", true); });
+  EXPECT_TRUE(contains(e.reason(), "not a Gmsh mesh")) << e.what();
+}
+
+TEST(MshReader, WhatIsNotAMeshGetsAHintForWhatItIs) {
+  InputError e = input_error([&] { from_text("solid vessel\n facet normal 0 0 1\n"); });
+  EXPECT_TRUE(contains(e.reason(), "it looks like an STL surface: write a .geo with Merge")) << e.what();
+  std::string binary_stl(84 + 50, '\0');
+  binary_stl[80] = 1;
+  e = input_error([&] { from_text(binary_stl); });
+  EXPECT_TRUE(contains(e.reason(), "it looks like an STL surface")) << e.what();
+  e = input_error([&] { from_text("\xEF\xBB\xBF$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"); });
+  EXPECT_TRUE(contains(e.reason(), "begins with '\\xEF\\xBB\\xBF$MeshFormat")) << e.what();
+  EXPECT_TRUE(contains(e.reason(), "byte-order mark")) << e.what();
+  e = input_error([&] { from_text("\n$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"); });
+  EXPECT_TRUE(contains(e.reason(), "remove the blank space before $MeshFormat")) << e.what();
+  e = input_error([&] { from_text("Point(1) = {0, 0, 0};\n"); });
+  EXPECT_TRUE(contains(e.reason(), "a Gmsh script must be named .geo")) << e.what();
+}
