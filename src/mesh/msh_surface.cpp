@@ -193,6 +193,38 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     surface_elements += s.tri.size() + s.quad.size();
     raw.push_back(std::move(s));
   }
+  // Surface elements outside every physical surface would leave holes unseen: refused.
+  if (!raw.empty()) {
+    std::vector<char> grouped(f.elements.size(), 0);
+    for (const auto& sf : raw) {
+      for (std::size_t e : sf.tri) grouped[e] = 1;
+      for (std::size_t e : sf.quad) grouped[e] = 1;
+    }
+    std::size_t orphans = 0, first = 0;
+    for (std::size_t e = 0; e < f.elements.size(); ++e)
+      if (!grouped[e] && msh_element_type(f.elements[e].type).dim == 2) {
+        if (orphans++ == 0) first = e;
+      }
+    // In 2.2 files an element of a physical surface may stand once more for another group.
+    if (orphans > 0 && f.version < 4) {
+      std::vector<long> tags;
+      for (const auto& sf : raw)
+        for (const auto* list : {&sf.tri, &sf.quad})
+          for (std::size_t e : *list) tags.push_back(f.elements[e].tag);
+      std::sort(tags.begin(), tags.end());
+      orphans = 0;
+      for (std::size_t e = 0; e < f.elements.size(); ++e)
+        if (!grouped[e] && msh_element_type(f.elements[e].type).dim == 2 &&
+            !std::binary_search(tags.begin(), tags.end(), f.elements[e].tag)) {
+          if (orphans++ == 0) first = e;
+        }
+    }
+    if (orphans > 0)
+      fail(fmt::format("{} surface element(s), the first {}, belong to no physical surface: add them to one "
+                       "(Physical Surface) or leave them out of the file (Gmsh: Mesh.SaveAll = 0)",
+                       orphans, element_ref(f.elements[first])),
+           f.elements[first].line);
+  }
   if (raw.empty()) {
     std::size_t two_d = 0;
     for (const auto& el : f.elements) two_d += msh_element_type(el.type).dim == 2;

@@ -353,3 +353,12 @@ TEST(MshReader, WhatIsNotAMeshGetsAHintForWhatItIs) {
   e = input_error([&] { from_text("Point(1) = {0, 0, 0};\n"); });
   EXPECT_TRUE(contains(e.reason(), "a Gmsh script must be named .geo")) << e.what();
 }
+
+TEST(MshReader, SurfaceElementsOutsideThePhysicalSurfacesAreRefused) {
+  // A third triangle with no physical tag beside the physical square: a hole nobody sees.
+  const InputError e = input_error([&] { from_text(square("5 2 0 0\n", 5, "3 2 2 0 1 2 5 3\n", 3)); });
+  EXPECT_EQ(e.where().line, 20);
+  EXPECT_TRUE(contains(e.reason(), "1 surface element(s), the first element 3 (line 20), belong to no physical "
+                                   "surface"))
+      << e.what();
+}
