@@ -59,7 +59,7 @@ def main() -> int:
             meshes.append(out)
     failed = 0
     print(f"| mesh | bytes | trials | read | refused | failed | slowest check (s) |")
-    print(f"|---|---|---|---|---|---|---|")
+    print(f"|---|---|---|---|---|---|---|", flush=True)
     for mesh in meshes:
         original = open(mesh, "rb").read()
         surface = surface_of(original)
@@ -99,7 +99,7 @@ def main() -> int:
             else:
                 refused += 1
         failed += bad
-        print(f"| {name} | {len(original)} | {trials} | {read} | {refused} | {bad} | {slowest:.2f} |")
+        print(f"| {name} | {len(original)} | {trials} | {read} | {refused} | {bad} | {slowest:.2f} |", flush=True)
     print(f"mesh corruption: {failed} failed trial(s)")
     return 1 if failed else 0
 
