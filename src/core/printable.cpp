@@ -4,11 +4,47 @@
 
 namespace tunica {
 
+namespace {
+
+/// Length of the well-formed UTF-8 sequence at s[i] encoding a printable code point
+/// (U+00A0 and above, no surrogates, at most U+10FFFF), or 0.
+std::size_t utf8_printable(std::string_view s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  std::size_t n = 0;
+  char32_t cp = 0;
+  if (c >= 0xC2 && c <= 0xDF) n = 2, cp = c & 0x1F;
+  else if (c >= 0xE0 && c <= 0xEF) n = 3, cp = c & 0x0F;
+  else if (c >= 0xF0 && c <= 0xF4) n = 4, cp = c & 0x07;
+  else return 0;
+  if (i + n > s.size()) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((b(i + k) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (b(i + k) & 0x3F);
+  }
+  const bool overlong = (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000);
+  // Not kept: surrogates, line and paragraph separators, and the invisible format
+  // characters (zero-width spaces and joiners, bidirectional overrides, the byte-order
+  // mark), which would hide or reorder what a message shows.
+  const bool invisible = (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x2028 && cp <= 0x202E) ||
+                         (cp >= 0x2060 && cp <= 0x206F) || cp == 0xFEFF || cp == 0xAD;
+  if (overlong || cp < 0xA0 || (cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF || invisible) return 0;
+  return n;
+}
+
+}  // namespace
+
 std::string printable(std::string_view text, std::size_t max_chars) {
   std::string out;
-  const std::size_t n = std::min(text.size(), max_chars);
-  for (std::size_t i = 0; i < n; ++i) {
+  std::size_t shown = 0, i = 0;
+  for (; i < text.size() && shown < max_chars; ++shown) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (const std::size_t n = c >= 0x80 ? utf8_printable(text, i) : 0) {
+      out.append(text.substr(i, n));
+      i += n;
+      continue;
+    }
+    ++i;
     if (c == '\n') out += "\\n";
     else if (c == '\r') out += "\\r";
     else if (c == '\t') out += "\\t";
@@ -21,8 +57,22 @@ std::string printable(std::string_view text, std::size_t max_chars) {
       out += static_cast<char>(c);
     }
   }
-  if (text.size() > max_chars) out += "...";
+  if (i < text.size()) out += "...";
   return out;
+}
+
+bool is_printable_line(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      ++i;
+      continue;
+    }
+    const std::size_t n = c >= 0x80 ? utf8_printable(text, i) : 0;
+    if (n == 0) return false;
+    i += n;
+  }
+  return true;
 }
 
 }  // namespace tunica

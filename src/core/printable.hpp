@@ -1,8 +1,8 @@
 #pragma once
 // Quoting text taken from an input file in a one-line message: control
-// characters, bytes outside printable ASCII and quotes are escaped (\n, \xNN),
-// and long text is cut with "...", so a message never spans lines or carries
-// raw bytes to the terminal.
+// characters and bytes that are not well-formed UTF-8 are escaped (\n, \xNN),
+// printable UTF-8 (a physical group named "Wand_ä") is kept, and long text is cut
+// with "...", so a message never spans lines or carries raw bytes to the terminal.
 #include <string>
 #include <string_view>
 
@@ -10,5 +10,9 @@ namespace tunica {
 
 /// `text` made printable, at most `max_chars` characters of it.
 std::string printable(std::string_view text, std::size_t max_chars = 40);
+
+/// True if `text` holds only printable ASCII and well-formed printable UTF-8 (no control
+/// characters, no line breaks): what every message quoting an input must be.
+bool is_printable_line(std::string_view text);
 
 }  // namespace tunica

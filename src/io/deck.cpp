@@ -356,7 +356,14 @@ void read_node_sets(const DeckNode& deck, Model& m) {
 
 int node_set_ref(const Params& p, const std::string& key, const Model& m) {
   const int s = m.find_node_set(p.text(key));
-  if (s < 0) p.fail(key, "undefined node set '" + p.text(key) + "'");
+  if (s < 0) {
+    std::string known;
+    std::size_t listed = 0;
+    for (const auto& set : m.node_sets)
+      if (listed++ < 30) known += (known.empty() ? "" : ", ") + set.name;
+    if (listed > 30) known += fmt::format(", ... ({} in all)", listed);
+    p.fail(key, "undefined node set '" + p.text(key) + "' (the node sets are: " + (known.empty() ? "none" : known) + ")");
+  }
   return s;
 }
 

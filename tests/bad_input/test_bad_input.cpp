@@ -110,7 +110,7 @@ TEST(BadInput, UndefinedMaterial) {
 
 TEST(BadInput, UndefinedNodeSet) {
   expect_error("undefined-set", "node_set: wall.start", "node_set: wall.begin", "boundary.base.node_set",
-               "undefined node set 'wall.begin'");
+               "undefined node set 'wall.begin' (the node sets are: wall.start, wall.end, wall.all)");
 }
 
 TEST(BadInput, UndefinedLoadInHistory) {

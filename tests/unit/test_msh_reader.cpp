@@ -20,6 +20,7 @@
 
 #include "core/bounded_file.hpp"
 #include "core/errors.hpp"
+#include "core/printable.hpp"
 #include "mesh/geo_mesher.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/msh_parser.hpp"
@@ -301,7 +302,7 @@ TEST(MshReader, RandomCorruptionsAreReadOrRefusedWithOneLine) {
         const std::string m = e.what();
         EXPECT_EQ(m.find('\n'), std::string::npos) << m;
         EXPECT_EQ(m.rfind(f, 0), 0u) << m;
-        EXPECT_TRUE(std::all_of(m.begin(), m.end(), [](unsigned char c) { return c >= 0x20 && c < 0x7f; })) << m;
+        EXPECT_TRUE(is_printable_line(m)) << m;
       }
     }
     std::printf("  %s: %d of 200 corruptions refused, the rest read\n", f, refused);
@@ -361,4 +362,15 @@ TEST(MshReader, SurfaceElementsOutsideThePhysicalSurfacesAreRefused) {
   EXPECT_TRUE(contains(e.reason(), "1 surface element(s), the first element 3 (line 20), belong to no physical "
                                    "surface"))
       << e.what();
+}
+
+TEST(Printable, EscapesControlsAndInvalidBytesAndKeepsUtf8) {
+  EXPECT_EQ(printable("Wand_\xC3\xA4"), "Wand_\xC3\xA4");  // "Wand_ä" stays
+  EXPECT_EQ(printable("a\nb\xFF\xC3"), "a\\nb\\xFF\\xC3");
+  EXPECT_EQ(printable("\xE2\x80\xA8"), "\\xE2\\x80\\xA8");  // U+2028, a line separator
+  EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");  // overlong
+  EXPECT_EQ(printable(std::string(50, 'x'), 10), "xxxxxxxxxx...");
+  EXPECT_TRUE(is_printable_line("σ × 2"));
+  EXPECT_FALSE(is_printable_line("a\nb"));
+  EXPECT_FALSE(is_printable_line("\xFF"));
 }
