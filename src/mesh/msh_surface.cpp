@@ -252,13 +252,12 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
   if (static_cast<long>(used.size()) > kMaxMshNodes)
     fail(fmt::format("the physical surfaces have {} nodes (at most {} are allowed)", used.size(), kMaxMshNodes));
   check_coincident(f, used, path);
-  std::unordered_map<long, int> compact;  // f.nodes index -> mesh node
-  compact.reserve(used.size());
+  std::vector<int> compact(f.nodes.size(), -1);  // f.nodes index -> mesh node, -1 if unused
   SurfaceMesh mesh;
   mesh.nodes.reserve(used.size());
   mesh.node_tags.reserve(used.size());
   for (std::size_t i = 0; i < used.size(); ++i) {
-    compact.emplace(used[i], static_cast<int>(i));
+    compact[used[i]] = static_cast<int>(i);
     mesh.nodes.push_back(f.nodes[used[i]].x);
     mesh.node_tags.push_back(f.nodes[used[i]].tag);
   }
@@ -268,13 +267,13 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     out.name = s.name;
     for (std::size_t e : s.tri) {
       const auto& el = f.elements[e];
-      out.triangles.push_back({compact.at(node_of(el, 0)), compact.at(node_of(el, 1)), compact.at(node_of(el, 2))});
+      out.triangles.push_back({compact[node_of(el, 0)], compact[node_of(el, 1)], compact[node_of(el, 2)]});
       out.triangle_tags.push_back(el.tag);
     }
     for (std::size_t e : s.quad) {
       const auto& el = f.elements[e];
-      out.quads.push_back({compact.at(node_of(el, 0)), compact.at(node_of(el, 1)), compact.at(node_of(el, 2)),
-                           compact.at(node_of(el, 3))});
+      out.quads.push_back({compact[node_of(el, 0)], compact[node_of(el, 1)], compact[node_of(el, 2)],
+                           compact[node_of(el, 3)]});
       out.quad_tags.push_back(el.tag);
     }
     mesh.surfaces.push_back(std::move(out));
@@ -332,7 +331,7 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     for (std::size_t e : members) {
       const auto& el = f.elements[e];
       for (int k = 0; k < msh_element_type(el.type).nodes; ++k)
-        if (auto it = compact.find(node_of(el, k)); it != compact.end()) set.push_back(it->second);
+        if (const int c = compact[node_of(el, k)]; c >= 0) set.push_back(c);
     }
   }
   if (!entity_groups.empty())
@@ -340,9 +339,9 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
       if (f.nodes[i].entity_dim < 0 || f.nodes[i].entity_dim > 1) continue;
       auto g = entity_groups.find({f.nodes[i].entity_dim, f.nodes[i].entity});
       if (g == entity_groups.end()) continue;
-      auto c = compact.find(i);
-      if (c == compact.end()) continue;
-      for (const Key& key : g->second) sets[key].push_back(c->second);
+      const int c = compact[i];
+      if (c < 0) continue;
+      for (const Key& key : g->second) sets[key].push_back(c);
     }
   std::map<std::string, Key> named;  // node-set name -> the group that took it
   for (auto& [key, set] : sets) {
