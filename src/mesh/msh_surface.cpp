@@ -194,36 +194,23 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     raw.push_back(std::move(s));
   }
   // Surface elements outside every physical surface would leave holes unseen: refused.
+  // (By tag: a 2.2 file repeats an element once per physical group it belongs to.)
   if (!raw.empty()) {
-    std::vector<char> grouped(f.elements.size(), 0);
-    for (const auto& sf : raw) {
-      for (std::size_t e : sf.tri) grouped[e] = 1;
-      for (std::size_t e : sf.quad) grouped[e] = 1;
-    }
-    std::size_t orphans = 0, first = 0;
-    for (std::size_t e = 0; e < f.elements.size(); ++e)
-      if (!grouped[e] && msh_element_type(f.elements[e].type).dim == 2) {
-        if (orphans++ == 0) first = e;
-      }
-    // In 2.2 files an element of a physical surface may stand once more for another group.
-    if (orphans > 0 && f.version < 4) {
-      std::vector<long> tags;
-      for (const auto& sf : raw)
-        for (const auto* list : {&sf.tri, &sf.quad})
-          for (std::size_t e : *list) tags.push_back(f.elements[e].tag);
-      std::sort(tags.begin(), tags.end());
-      orphans = 0;
-      for (std::size_t e = 0; e < f.elements.size(); ++e)
-        if (!grouped[e] && msh_element_type(f.elements[e].type).dim == 2 &&
-            !std::binary_search(tags.begin(), tags.end(), f.elements[e].tag)) {
-          if (orphans++ == 0) first = e;
-        }
-    }
-    if (orphans > 0)
+    std::vector<long> grouped;
+    for (const auto& sf : raw)
+      for (const auto* list : {&sf.tri, &sf.quad})
+        for (std::size_t e : *list) grouped.push_back(f.elements[e].tag);
+    std::sort(grouped.begin(), grouped.end());
+    std::size_t orphans = 0;
+    const MshFile::Element* first = nullptr;
+    for (const auto& el : f.elements)
+      if (msh_element_type(el.type).dim == 2 && !std::binary_search(grouped.begin(), grouped.end(), el.tag))
+        if (orphans++ == 0) first = &el;
+    if (first)
       fail(fmt::format("{} surface element(s), the first {}, belong to no physical surface: add them to one "
                        "(Physical Surface) or leave them out of the file (Gmsh: Mesh.SaveAll = 0)",
-                       orphans, element_ref(f.elements[first])),
-           f.elements[first].line);
+                       orphans, element_ref(*first)),
+           first->line);
   }
   if (raw.empty()) {
     std::size_t two_d = 0;
