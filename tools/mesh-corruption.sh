@@ -2,7 +2,7 @@
 # The .msh corruption campaign (docs/reliability.md): 1,000 random 8-byte corruptions of
 # every shipped mesh through `tunica check`; 0 crashes, 0 hangs, every refusal one line
 # naming the file. Builds Release first. Not part of the fast suite (it keeps a sample).
-#   bash tools/mesh-corruption.sh [TRIALS]
+#   bash tools/mesh-corruption.sh [TRIALS]     (or: cmake --build build --target mesh-corruption)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
