@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
@@ -120,9 +121,23 @@ std::string group_name(const MshFile& f, const Key& g) {
          std::to_string(g.second);
 }
 
-/// Two used nodes at one position (within 1e-9 of the mesh size): a crack in the surface.
-/// Nodes are sorted by their projection on a direction no mesh is aligned with, and only
-/// nodes whose projections are within the tolerance are compared.
+[[noreturn]] void coincide(const MshFile& f, long a, long b, const std::string& path) {
+  const auto& p = f.nodes[std::min(a, b)];
+  const auto& q = f.nodes[std::max(a, b)];
+  throw InputError(SourceLocation{path, q.line, 0, ""},
+                   fmt::format("{} and {} coincide at ({:.6g}, {:.6g}, {:.6g}): the surface is split there (a crack); "
+                               "merge duplicate nodes (Gmsh: Coherence Mesh;) or give the elements one node",
+                               node_ref(p), node_ref(q), p.x(0), p.x(1), p.x(2)));
+}
+
+/// Two used nodes at one position (within tol = 1e-9 of the mesh size): a crack in the
+/// surface. Fast path: nodes sorted by their projection on a direction no mesh is aligned
+/// with, comparing only nodes whose projections are within tol. A file whose nodes crowd
+/// one projection (all on one plane normal to it) would make that quadratic, so past
+/// 16 comparisons per node the check goes over to grids of cells of size H = 2 tol,
+/// shifted by 0 or H/2 along each axis (8 grids): two nodes within tol share a cell in
+/// at least one of them, and all nodes of one cell lie within 2√3 tol of each other, so a
+/// crowded cell is a coincidence too.
 void check_coincident(const MshFile& f, const std::vector<long>& used, const std::string& path) {
   if (used.size() < 2) return;
   Eigen::Vector3d lo = f.nodes[used[0]].x, hi = lo;
@@ -131,21 +146,37 @@ void check_coincident(const MshFile& f, const std::vector<long>& used, const std
     hi = hi.cwiseMax(f.nodes[i].x);
   }
   const double tol = 1e-9 * (hi - lo).norm();
+  if (!(tol > 0)) coincide(f, used[0], used[1], path);  // every node at one point
   const Eigen::Vector3d d = Eigen::Vector3d(1.0, std::sqrt(2.0), std::sqrt(3.0)).normalized();
   std::vector<std::pair<double, long>> proj;
   proj.reserve(used.size());
   for (long i : used) proj.emplace_back(d.dot(f.nodes[i].x), i);
   std::sort(proj.begin(), proj.end());
-  for (std::size_t a = 0; a < proj.size(); ++a)
+  std::size_t budget = 16 * used.size();
+  bool crowded = false;
+  for (std::size_t a = 0; a < proj.size() && !crowded; ++a)
     for (std::size_t b = a + 1; b < proj.size() && proj[b].first - proj[a].first <= tol; ++b) {
-      const auto& p = f.nodes[std::min(proj[a].second, proj[b].second)];
-      const auto& q = f.nodes[std::max(proj[a].second, proj[b].second)];
-      if ((p.x - q.x).norm() <= tol)
-        throw InputError(SourceLocation{path, q.line, 0, ""},
-                         fmt::format("{} and {} coincide at ({:.6g}, {:.6g}, {:.6g}): the surface is split there (a "
-                                     "crack); merge duplicate nodes (Gmsh: Coherence Mesh;) or give the elements one node",
-                                     node_ref(p), node_ref(q), p.x(0), p.x(1), p.x(2)));
+      if (budget-- == 0) {
+        crowded = true;
+        break;
+      }
+      if ((f.nodes[proj[a].second].x - f.nodes[proj[b].second].x).norm() <= tol)
+        coincide(f, proj[a].second, proj[b].second, path);
     }
+  if (!crowded) return;
+  const double H = 2 * tol;
+  std::vector<std::pair<std::array<long long, 3>, long>> cells(used.size());
+  for (int shift = 0; shift < 8; ++shift) {
+    for (std::size_t k = 0; k < used.size(); ++k) {
+      const Eigen::Vector3d& x = f.nodes[used[k]].x;
+      for (int c = 0; c < 3; ++c)
+        cells[k].first[c] = static_cast<long long>(std::floor((x(c) - lo(c)) / H + ((shift >> c) & 1) * 0.5));
+      cells[k].second = used[k];
+    }
+    std::sort(cells.begin(), cells.end());
+    for (std::size_t k = 1; k < cells.size(); ++k)
+      if (cells[k].first == cells[k - 1].first) coincide(f, cells[k - 1].second, cells[k].second, path);
+  }
 }
 
 }  // namespace

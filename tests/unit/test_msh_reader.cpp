@@ -8,6 +8,7 @@
 //   the line and the tags as written in the file; truncations and random corruptions
 //   of every shipped mesh are read or refused with a one-line InputError;
 // - counts far beyond the file's size are refused before anything is allocated.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -373,4 +374,38 @@ TEST(Printable, EscapesControlsAndInvalidBytesAndKeepsUtf8) {
   EXPECT_TRUE(is_printable_line("σ × 2"));
   EXPECT_FALSE(is_printable_line("a\nb"));
   EXPECT_FALSE(is_printable_line("\xFF"));
+}
+
+TEST(MshReader, NodesCrowdingOnePlaneAreCheckedInLinearithmicTime) {
+  // 160,000 nodes on one plane normal to the direction the fast check projects on (a
+  // grid in that plane, as a hostile file could make), no two coincident: the check
+  // must finish at once and accept them; one more node on top of another is found.
+  const Eigen::Vector3d d = Eigen::Vector3d(1.0, std::sqrt(2.0), std::sqrt(3.0)).normalized();
+  const Eigen::Vector3d u = d.cross(Eigen::Vector3d::UnitX()).normalized(), v = d.cross(u);
+  const int n = 400;
+  std::string nodes, elements;
+  int tag = 0, etag = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Eigen::Vector3d x = i * u + j * v;
+      nodes += fmt::format("{} {:.17g} {:.17g} {:.17g}\n", ++tag, x(0), x(1), x(2));
+    }
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j + 1, b = a + n;
+      elements += fmt::format("{} 3 2 1 1 {} {} {} {}\n", ++etag, a, b, b + 1, a + 1);
+    }
+  const auto mesh = [&](const std::string& extra_node, const std::string& extra_element, int more) {
+    return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(tag + more) + "\n" + nodes + extra_node +
+           "$EndNodes\n$Elements\n" + std::to_string(etag + more) + "\n" + elements + extra_element + "$EndElements\n";
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_EQ(from_text(mesh("", "", 0)).nodes.size(), static_cast<std::size_t>(n * n));
+  // One more node on node 1, in a triangle with nodes 2 and n + 2.
+  const InputError e = input_error([&] {
+    from_text(mesh(fmt::format("{} 0 0 0\n", tag + 1), fmt::format("{} 2 2 1 1 {} 2 {}\n", etag + 1, tag + 1, n + 2), 1));
+  });
+  EXPECT_TRUE(contains(e.reason(), fmt::format("node 1 (line 6) and node {} (line {}) coincide", tag + 1, tag + 6)))
+      << e.what();
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
 }
