@@ -91,9 +91,22 @@ void check_element_tags(const MshFile& f, const std::string& path) {
 }
 
 /// Elements of each physical group, ordered by elementary entity, then as in the file.
-std::map<Key, std::vector<std::size_t>> physical_groups(const MshFile& f) {
+std::map<Key, std::vector<std::size_t>> physical_groups(const MshFile& f, const std::string& path) {
   std::map<Key, std::vector<std::size_t>> groups;
   if (f.version >= 4) {
+    // Every element is listed once per physical group of its entity: bounded before listing.
+    std::size_t memberships = 0;
+    for (const auto& el : f.elements)
+      if (auto it = f.entity_physicals.find({el.entity_dim, el.entity}); it != f.entity_physicals.end())
+        memberships += it->second.size();
+    for (const auto& n : f.nodes)
+      if (auto it = f.entity_physicals.find({n.entity_dim, n.entity}); it != f.entity_physicals.end())
+        memberships += it->second.size();
+    if (memberships > static_cast<std::size_t>(4 * kMaxMshElements))
+      throw InputError(SourceLocation{path, 0, 0, ""},
+                       fmt::format("the elements and nodes belong to {} physical groups in all, more than the {} "
+                                   "Tunica reads (an entity in thousands of groups?)",
+                                   memberships, 4 * kMaxMshElements));
     for (const auto& [entity, phys] : f.entity_physicals)
       for (int p : phys) groups[{entity.first, p}];
     for (std::size_t e = 0; e < f.elements.size(); ++e) {
@@ -187,7 +200,7 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
   };
   const NodeIndex index(f, path);
   check_element_tags(f, path);
-  const auto groups = physical_groups(f);
+  const auto groups = physical_groups(f, path);
 
   // Physical surfaces: element indices by type, after checking their types.
   struct Raw {
@@ -196,16 +209,16 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     std::vector<std::size_t> tri, quad;
   };
   std::vector<Raw> raw;
+  std::map<std::string, int> surface_names;  // name -> physical tag
   std::size_t surface_elements = 0;
   for (const auto& [key, members] : groups) {
     if (key.first != 2) continue;
     Raw s;
     s.name = group_name(f, key);
     s.tag = key.second;
-    for (const auto& other : raw)
-      if (other.name == s.name)
-        fail(fmt::format("physical surfaces {} and {} are both named '{}'", other.tag, s.tag, printable(s.name)), 0,
-             printable(s.name));
+    if (auto [it, fresh] = surface_names.emplace(s.name, s.tag); !fresh)
+      fail(fmt::format("physical surfaces {} and {} are both named '{}'", it->second, s.tag, printable(s.name)), 0,
+           printable(s.name));
     for (std::size_t e : members) {
       const auto& el = f.elements[e];
       if (el.type == 2) s.tri.push_back(e);

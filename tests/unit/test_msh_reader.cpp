@@ -409,3 +409,19 @@ TEST(MshReader, NodesCrowdingOnePlaneAreCheckedInLinearithmicTime) {
       << e.what();
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
 }
+
+TEST(MshReader, AnEntityInHundredsOfThousandsOfGroupsIsRefusedBeforeListing) {
+  // One surface entity in 100,000 physical groups, holding 1,700 triangles: listing every
+  // membership would take 1.7e8 entries; refused at once instead.
+  std::string phys;
+  for (int p = 1; p <= 100000; ++p) phys += " " + std::to_string(p);
+  std::string elements;
+  for (int e = 1; e <= 1700; ++e) elements += fmt::format("{} 1 2 3\n", e);
+  const std::string text = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 1 0\n1 0 0 0 1 1 0 100000" + phys +
+                           " 0\n$EndEntities\n$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
+                           "$Elements\n1 1700 1 1700\n2 1 2 1700\n" + elements + "$EndElements\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  const InputError e = input_error([&] { from_text(text); });
+  EXPECT_TRUE(contains(e.reason(), "physical groups in all, more than the 160000000 Tunica reads")) << e.what();
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+}
