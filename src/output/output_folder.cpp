@@ -23,9 +23,8 @@ int remove_files(const fs::path& dir, Pick pick) {
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
     if (!entry.is_regular_file(ec) || !pick(name)) continue;
-    if (!fs::remove(entry.path(), ec) || ec)
-      throw std::runtime_error("cannot remove '" + entry.path().string() + "': " + ec.message());
-    ++removed;
+    if (fs::remove(entry.path(), ec)) ++removed;  // false: already gone
+    if (ec) throw std::runtime_error("cannot remove '" + entry.path().string() + "': " + ec.message());
   }
   return removed;
 }
