@@ -41,7 +41,7 @@ wanted = {early - window // 2, early + window // 2, increments - window, increme
 
 def cpu_seconds(pid):
     fields = open(f"/proc/{pid}/stat").read().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) * tick_s  # utime, stime
+    return (int(fields[11]) * tick_s, int(fields[12]) * tick_s)  # utime, stime
 start = time.monotonic()
 p = subprocess.Popen([tunica, "run", deck, "-o", out, "-j", "1"], stdout=subprocess.PIPE, text=True)
 for line in p.stdout:
@@ -56,8 +56,11 @@ if p.wait() != 0:
 total = time.monotonic() - start
 
 
-def per_increment(table, last):
-    return (table[last] - table[last - window]) / window
+def per_increment(table, last, part=None):
+    if part is None and isinstance(table[last], tuple):
+        return per_increment(table, last, 0) + per_increment(table, last, 1)
+    a, b = table[last - window], table[last]
+    return ((b[part] - a[part]) if part is not None else (b - a)) / window
 
 
 near_early = per_increment(stamps, early + window // 2)
@@ -71,6 +74,8 @@ print(f"time per increment, increments {increments - window + 1}-{increments}: {
 print(f"ratio end / early: {near_end / near_early:.3f} (wall time: follows the fsync latency of the moment)")
 print(f"CPU time per increment, same windows: {1e3 * cpu_early:.3f} ms and {1e3 * cpu_end:.3f} ms, "
       f"ratio {cpu_end / cpu_early:.3f} (target within 0.8-1.2)")
+print("  of which user / system: " + " and ".join(
+    f"{1e3 * per_increment(cpu, k, 0):.3f} / {1e3 * per_increment(cpu, k, 1):.3f} ms" for k in (early + window // 2, increments)))
 print("files at the end: " + ", ".join(f"{f} {s} bytes" for f, s in sizes.items()))
 shutil.rmtree(work)
 sys.exit(0 if 0.8 <= cpu_end / cpu_early <= 1.2 else 1)
