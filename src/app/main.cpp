@@ -15,6 +15,7 @@
 #include "mesh/geo_mesher.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "output/atomic_file.hpp"
+#include "output/output_lock.hpp"
 #include "output/restart_file.hpp"
 #include "output/run_writer.hpp"
 #include "output/stop_signal.hpp"
@@ -48,6 +49,10 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
     if (!out.empty() && std::filesystem::path(out) != std::filesystem::path(restart))
       throw tunica::InputError({deck, 0, 0, ""}, "--restart DIR continues the run in DIR: leave out -o or give the same directory");
     out = restart;
+  }
+  // One run per folder, for the whole run: taken before anything in the folder is read or written.
+  const tunica::OutputLock lock(out, /*create=*/restart.empty());
+  if (!restart.empty()) {
     const std::string file = restart + "/restart.txt";
     resume = std::make_unique<tunica::RestartRecord>(tunica::read_restart(file));
     check_restart_fits(model, *resume, file);

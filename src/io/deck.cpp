@@ -173,9 +173,20 @@ const ComponentSpec& output_spec() {
   static const ComponentSpec s{
       "output", "", "What a run writes besides newton.csv.",
       {structured("history", "list", "history columns (see `output.history`)"),
-       with_default(boolean("vtk", "write ParaView files (.vtu per increment, .pvd series)"), "true"),
+       with_default(boolean("vtk", "write ParaView files (.vtu frames, .pvd series)"), "true"),
        with_default(at_most(at_least(integer("vtk_segments", "axisymmetric: hoop subdivisions of the revolved surface"), 3), 1000),
-                    "48")}};
+                    "48"),
+       with_default(at_most(at_least(integer("vtk_every", "a ParaView frame every N increments of a step, and always at "
+                                                          "the reference state and the last increment of each step"),
+                                     1),
+                            1e6),
+                    "1"),
+       with_default(one_of(text("vtk_format",
+                                "how the .vtu frames store their data: compressed = appended raw binary, zlib "
+                                "(what VTK's own XML writers produce; smallest), binary = appended raw binary, "
+                                "ascii = numbers as text (largest, readable in an editor)"),
+                           {"compressed", "binary", "ascii"}),
+                    "compressed")}};
   return s;
 }
 
@@ -509,6 +520,9 @@ void read_output(const DeckNode& deck, Model& m) {
   const Params p = read_params(out, output_spec(), m.units);
   m.output.vtk = p.boolean("vtk");
   m.output.vtk_segments = static_cast<int>(p.integer("vtk_segments"));
+  m.output.vtk_every = static_cast<int>(p.integer("vtk_every"));
+  const std::string format = p.text("vtk_format");
+  m.output.vtk_format = format == "ascii" ? VtkFormat::ascii : format == "binary" ? VtkFormat::binary : VtkFormat::compressed;
   if (!out.has("history")) return;
   std::set<std::string> columns;
   for (const auto& node : out["history"].items()) {

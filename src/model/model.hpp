@@ -193,10 +193,16 @@ struct HistoryRequest {
   Dimension dim = Dimension::dimensionless;
 };
 
+/// How the DataArrays of a .vtu frame are stored: text, or appended raw bytes (uncompressed, or
+/// zlib-compressed as VTK's vtkZLibDataCompressor reads them).
+enum class VtkFormat { ascii, binary, compressed };
+
 struct OutputSettings {
   std::vector<HistoryRequest> history;
   bool vtk = true;
   int vtk_segments = 48;  ///< hoop subdivisions of the revolved surface (axisymmetric)
+  int vtk_every = 1;      ///< a frame every this many increments of a step (and at each step's end)
+  VtkFormat vtk_format = VtkFormat::compressed;
 };
 
 struct Model {

@@ -5,14 +5,16 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
+
+#include "core/bounded_file.hpp"
 
 namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 2";
+constexpr const char* kMagic = "tunica-restart 3";
+constexpr long kMaxFiles = 16;
 constexpr long kMaxValues = 100'000'000;  // refuse absurd counts before allocating
 
 void put(std::string& s, const char* key, const std::vector<double>& v) {
@@ -23,9 +25,7 @@ void put(std::string& s, const char* key, const std::vector<double>& v) {
 
 class Reader {
 public:
-  Reader(const std::string& path) : path_(path), in_(path) {
-    if (!in_) throw InputError({path, 0, 0, ""}, std::string("cannot read the restart file: ") + std::strerror(errno));
-  }
+  Reader(const std::string& path, const std::string& text) : path_(path), in_(text) {}
   /// Next line, which must start with `key`; returns the rest split in words.
   std::vector<std::string> line(const std::string& key) {
     std::string l;
@@ -73,13 +73,22 @@ public:
     for (long i = 1; i <= n; ++i) v.push_back(number(w[i]));
     return v;
   }
+  std::uint32_t hex32(const std::string& w) {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long v = std::strtoul(w.c_str(), &end, 16);
+    if (w.size() != 8 || *end || errno == ERANGE || v > 0xffffffffUL) fail("not a CRC-32 (8 hex digits): '" + w + "'");
+    return static_cast<std::uint32_t>(v);
+  }
+  /// Bytes read so far (the start of the next line).
+  std::size_t position() { return static_cast<std::size_t>(in_.tellg()); }
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError({path_, line_, 0, ""}, "malformed restart file: " + what);
   }
 
 private:
   std::string path_;
-  std::ifstream in_;
+  std::istringstream in_;
   int line_ = 0;
 };
 
@@ -91,8 +100,9 @@ std::string restart_text(const RestartRecord& r) {
   s += "deck " + r.deck + "\n";
   s += fmt::format("step {}\nfraction {:a}\ndt {:a}\nincrement {}\nreduced_successes {}\n", c.step, c.fraction, c.dt,
                    c.increment, c.reduced_successes);
-  s += fmt::format("history_rows {}\nnewton_rows {}\n", r.history_rows, r.newton_rows);
-  put(s, "frame_times", r.frame_times);
+  s += fmt::format("history_rows {}\nnewton_rows {}\nframes {}\nfiles {}\n", r.history_rows, r.newton_rows, r.frames,
+                   r.files.size());
+  for (const auto& f : r.files) s += fmt::format("file {} {} {:08x}\n", f.name, f.size_bytes, f.crc32);
   put(s, "step_start_boundary", c.step_start.boundary);
   put(s, "step_start_pressure", c.step_start.pressure);
   put(s, "step_start_volume", c.step_start.volume);
@@ -100,16 +110,17 @@ std::string restart_text(const RestartRecord& r) {
   put(s, "pressure", c.loads.pressure);
   put(s, "volume", c.loads.volume);
   put(s, "u", std::vector<double>(c.u.data(), c.u.data() + c.u.size()));
-  return s;
+  return s + fmt::format("checksum {:08x}\n", crc32_of(s));
 }
 
 RestartRecord read_restart(const std::string& path) {
-  Reader in(path);
+  const std::string text = read_file_bounded(path, kMaxRestartBytes, "restart file");
+  Reader in(path, text);
   RestartRecord r;
   {
-    std::ifstream f(path);
-    std::string first;
-    std::getline(f, first);
+    const std::string first = text.substr(0, text.find('\n'));
+    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic)
+      in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic + "')");
     if (first != kMagic) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
   }
   in.line("tunica-restart");
@@ -123,7 +134,14 @@ RestartRecord read_restart(const std::string& path) {
   c.reduced_successes = static_cast<int>(in.scalar_int("reduced_successes", 1'000'000'000));
   r.history_rows = static_cast<int>(in.scalar_int("history_rows", 1'000'000'000));
   r.newton_rows = static_cast<int>(in.scalar_int("newton_rows", 1'000'000'000));
-  r.frame_times = in.vector("frame_times");
+  r.frames = in.scalar_int("frames", kMaxValues);
+  const long files = in.scalar_int("files", kMaxFiles);
+  for (long k = 0; k < files; ++k) {
+    const auto w = in.line("file");
+    if (w.size() != 3) in.fail("'file' takes a name, a byte length and a CRC-32");
+    if (w[0].empty() || w[0].find("..") != std::string::npos || w[0][0] == '/') in.fail("not a file of the run: '" + w[0] + "'");
+    r.files.push_back({w[0], static_cast<std::uint64_t>(in.integer(w[1], 1L << 50)), in.hex32(w[2])});
+  }
   c.step_start.boundary = in.vector("step_start_boundary");
   c.step_start.pressure = in.vector("step_start_pressure");
   c.step_start.volume = in.vector("step_start_volume");
@@ -133,6 +151,15 @@ RestartRecord read_restart(const std::string& path) {
   const auto u = in.vector("u");
   c.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
   if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");
+  // Last: the CRC-32 of every byte before this line. A restart file edited by hand or damaged
+  // in a way that still parses is refused here.
+  const std::size_t signed_bytes = in.position();
+  const auto sum = in.line("checksum");
+  if (sum.size() != 1) in.fail("'checksum' takes one value");
+  const std::uint32_t recorded = in.hex32(sum[0]);
+  if (crc32_of(text.substr(0, signed_bytes)) != recorded)
+    throw InputError({path, 0, 0, ""}, "the restart file was changed after Tunica wrote it (its CRC-32 does not match "
+                                       "its recorded checksum): refusing to continue from it");
   return r;
 }
 

@@ -3,70 +3,123 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/bounded_file.hpp"
 #include "output/atomic_file.hpp"
 #include "output/history.hpp"
+#include "output/output_folder.hpp"
 #include "output/stop_signal.hpp"
 
 namespace tunica {
 
 namespace {
 
-/// The first `rows` data rows of a CSV file written by an earlier run, after checking its header.
-std::string csv_prefix(const std::string& path, const std::string& header, int rows) {
-  std::ifstream in(path);
-  if (!in) throw InputError({path, 0, 0, ""}, "cannot read the file of the run to resume");
-  std::string line, out;
-  if (!std::getline(in, line) || line + "\n" != header)
-    throw InputError({path, 1, 0, ""}, "its columns differ from what this deck writes:\n  file: " + line +
+constexpr const char* kFramesHeader = "series,frame,time,file,size_bytes,crc32\n";
+constexpr std::size_t kMaxFramesCsvBytes = std::size_t{1} << 30;
+
+std::string frame_file(const char* series, long frame) { return fmt::format("vtk/{}_{:06d}.vtu", series, frame); }
+
+/// Errors unless the first line of `path` is `header` (the columns this deck writes).
+void check_header(const std::string& path, const std::string& header) {
+  const std::string head = read_file_bounded(path, 1 << 20, "file of the run to resume").substr(0, header.size() + 1);
+  const std::string line = head.substr(0, head.find('\n'));
+  if (line + "\n" != header)
+    throw InputError({path, 1, 0, ""}, "its columns differ from what this deck writes:\n  file: " + line.substr(0, 400) +
                                            "\n  deck: " + header.substr(0, header.size() - 1));
-  out = header;
-  for (int k = 0; k < rows; ++k) {
-    if (!std::getline(in, line)) throw InputError({path, k + 2, 0, ""}, "holds fewer rows than the restart file records");
-    out += line + "\n";
-  }
-  return out;
 }
 
-std::string frame_file(const char* series, std::size_t frame) { return fmt::format("vtk/{}_{:06d}.vtu", series, frame); }
+const FileRecord* find_record(const RestartRecord& r, const std::string& name) {
+  for (const auto& f : r.files)
+    if (f.name == name) return &f;
+  return nullptr;
+}
 
 }  // namespace
 
 RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume)
-    : model_(model),
-      dir_(std::move(directory)),
-      progress_(progress),
-      meridian_(dir_ + "/meridian.pvd"),
-      surface_(dir_ + "/surface.pvd") {
+    : model_(model), dir_(std::move(directory)), progress_(progress) {
   std::error_code ec;
   std::filesystem::create_directories(dir_ + "/vtk", ec);
   if (ec) throw std::runtime_error("cannot create the output directory '" + dir_ + "': " + ec.message());
-  history_ = "step,increment,time";
-  for (const auto& r : model.output.history) history_ += "," + r.column;
-  history_ += "\n";
-  newton_ = "step,increment,attempt,iteration,time,residual,relative_residual,energy,relative_energy,"
-            "backtracks,active_contacts,active_changes,solver,assembly_s,factor_s,solve_s\n";
+  history_header_ = "step,increment,time";
+  for (const auto& r : model.output.history) history_header_ += "," + r.column;
+  history_header_ += "\n";
+  newton_header_ = "step,increment,attempt,iteration,time,residual,relative_residual,energy,relative_energy,"
+                   "backtracks,active_contacts,active_changes,solver,assembly_s,factor_s,solve_s\n";
   if (resume) {
-    history_ = csv_prefix(dir_ + "/history.csv", history_, resume->history_rows);
-    newton_ = csv_prefix(dir_ + "/newton.csv", newton_, resume->newton_rows);
-    history_rows_ = resume->history_rows;
-    newton_rows_ = resume->newton_rows;
-    frame_times_ = resume->frame_times;
-    for (std::size_t f = 0; f < frame_times_.size(); ++f) {
-      if (model_.geometry == Geometry::axisymmetric) meridian_.preload(frame_times_[f], frame_file("meridian", f));
-      surface_.preload(frame_times_[f], frame_file("surface", f));
-    }
+    resume_from(*resume);
+    return;
   }
+  const int removed = remove_earlier_run(dir_);
+  if (removed > 0 && progress_)
+    std::fprintf(progress_, "removed the %d file(s) of an earlier Tunica run in %s\n", removed, dir_.c_str());
+  history_.create(dir_, "history.csv", history_header_);
+  newton_.create(dir_, "newton.csv", newton_header_);
+}
+
+void RunWriter::resume_from(const RestartRecord& r) {
+  const std::string restart_file = dir_ + "/restart.txt";
+  const FileRecord* history = find_record(r, "history.csv");
+  const FileRecord* newton = find_record(r, "newton.csv");
+  if (!history || !newton) throw InputError({restart_file, 0, 0, ""}, "records no history.csv or newton.csv");
+  // The appended files: their recorded bytes unchanged; a tail written after the checkpoint is cut.
+  for (const auto& f : r.files) verify_file(dir_, f, Tail::cut);
+  check_header(dir_ + "/history.csv", history_header_);
+  check_header(dir_ + "/newton.csv", newton_header_);
+  history_.resume(dir_, *history);
+  newton_.resume(dir_, *newton);
+  history_rows_ = r.history_rows;
+  newton_rows_ = r.newton_rows;
+  frames_ = r.frames;
+  if (frames_ > 0) {
+    // Every frame the series list, exactly as frames.csv records it.
+    const std::vector<std::string> series = model_.geometry == Geometry::axisymmetric
+                                                ? std::vector<std::string>{"meridian", "surface"}
+                                                : std::vector<std::string>{"surface"};
+    const FileRecord* frames = find_record(r, "frames.csv");
+    if (!frames) throw InputError({restart_file, 0, 0, ""}, "records frames but no frames.csv");
+    std::istringstream in(read_file_bounded(dir_ + "/frames.csv", kMaxFramesCsvBytes, "frames.csv"));
+    std::string line;
+    std::getline(in, line);
+    std::map<std::string, long> count;
+    for (int row = 2; std::getline(in, line); ++row) {
+      std::vector<std::string> w;
+      std::istringstream fields(line);
+      for (std::string x; std::getline(fields, x, ',');) w.push_back(x);
+      if (w.size() != 6 || w[3].rfind("vtk/", 0) != 0 || w[3].find("..") != std::string::npos)
+        throw InputError({dir_ + "/frames.csv", row, 0, ""}, "not a frame row of Tunica");
+      std::uint64_t bytes = 0;
+      std::uint32_t crc = 0;
+      try {
+        bytes = std::stoull(w[4]);
+        crc = static_cast<std::uint32_t>(std::stoul(w[5], nullptr, 16));
+      } catch (const std::exception&) {
+        throw InputError({dir_ + "/frames.csv", row, 0, ""}, "not a frame row of Tunica");
+      }
+      verify_file(dir_, {w[3], bytes, crc}, Tail::refuse);
+      ++count[w[0]];
+    }
+    for (const auto& name : series) {
+      if (count[name] != frames_)
+        throw InputError({dir_ + "/frames.csv", 0, 0, ""},
+                         fmt::format("lists {} {} frame(s); the restart file records {}", count[name], name, frames_));
+      const FileRecord* pvd = find_record(r, name + ".pvd");
+      if (!pvd) throw InputError({restart_file, 0, 0, ""}, "records frames but no " + name + ".pvd");
+      (name == "meridian" ? meridian_pvd_ : surface_pvd_).resume(dir_, *pvd, pvd_tail());
+    }
+    frames_csv_.resume(dir_, *frames);
+  }
+  remove_after_checkpoint(dir_, frames_);
 }
 
 void RunWriter::on_iteration(const IncrementInfo& info, const IterationRecord& r) {
-  newton_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{},{},{:.3e},{:.3e},{:.3e}\n", info.step,
-                         info.increment, info.attempt, r.iteration, info.time, r.residual, r.relative_residual,
-                         r.energy, r.relative_energy, r.backtracks, r.active_contacts, r.active_changes, r.solver,
-                         r.assembly_seconds, r.factor_seconds, r.solve_seconds);
+  newton_pending_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{},{},{:.3e},{:.3e},{:.3e}\n", info.step,
+                                 info.increment, info.attempt, r.iteration, info.time, r.residual, r.relative_residual,
+                                 r.energy, r.relative_energy, r.backtracks, r.active_contacts, r.active_changes, r.solver,
+                                 r.assembly_seconds, r.factor_seconds, r.solve_seconds);
   ++newton_rows_;
   if (progress_)
     std::fprintf(progress_, "  step %d increment %d iteration %d  residual %.3e  relative %.3e\n", info.step,
@@ -79,29 +132,50 @@ void RunWriter::on_cutback(const IncrementInfo& info, const std::string& why) {
                  why.c_str());
 }
 
+bool RunWriter::wants_frame(const IncrementInfo& info) const {
+  if (!model_.output.vtk) return false;
+  // The reference state, every vtk_every-th increment of a step, and the end of each step.
+  return info.step == 0 || info.increment % model_.output.vtk_every == 0 || info.fraction >= 1.0 - 1e-12;
+}
+
+void RunWriter::write_frame(const Analysis& analysis, const IncrementInfo& info) {
+  std::string rows;
+  const auto put = [&](const char* series, const std::string& text, AppendFile& pvd) {
+    const std::string file = frame_file(series, frames_);
+    write_file_atomically(dir_ + "/" + file, text, Durability::synced);
+    rows += fmt::format("{},{},{:.12g},{},{},{:08x}\n", series, frames_, info.time, file, text.size(), crc32_of(text));
+    if (!pvd.is_open()) pvd.create(dir_, std::string(series) + ".pvd", pvd_head(), pvd_tail());
+    pvd.append(pvd_entry(info.time, file));
+  };
+  const VtkFormat format = model_.output.vtk_format;
+  if (model_.geometry == Geometry::axisymmetric) {
+    put("meridian", meridian_vtu(analysis, format), meridian_pvd_);
+    put("surface", surface_vtu(analysis, model_.output.vtk_segments, format), surface_pvd_);
+  } else {
+    put("surface", surface3d_vtu(analysis, format), surface_pvd_);
+  }
+  if (!frames_csv_.is_open()) frames_csv_.create(dir_, "frames.csv", kFramesHeader);
+  frames_csv_.append(rows);
+  ++frames_;
+}
+
 void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info) {
   const std::vector<double> values = history_values(analysis, info);
-  history_ += fmt::format("{},{},{:.12g}", info.step, info.increment, info.time);
-  for (double v : values) history_ += fmt::format(",{:.12g}", v);
-  history_ += "\n";
+  std::string row = fmt::format("{},{},{:.12g}", info.step, info.increment, info.time);
+  for (double v : values) row += fmt::format(",{:.12g}", v);
+  history_.append(row + "\n");
   ++history_rows_;
-  write_file_atomically(dir_ + "/history.csv", history_);
-  write_file_atomically(dir_ + "/newton.csv", newton_);
-  if (model_.output.vtk) {
-    const std::size_t frame = frame_times_.size();
-    if (model_.geometry == Geometry::axisymmetric) {
-      write_file_atomically(dir_ + "/" + frame_file("meridian", frame), meridian_vtu(analysis));
-      write_file_atomically(dir_ + "/" + frame_file("surface", frame), surface_vtu(analysis, model_.output.vtk_segments));
-      meridian_.add(info.time, frame_file("meridian", frame));
-    } else {
-      write_file_atomically(dir_ + "/" + frame_file("surface", frame), surface3d_vtu(analysis));
-    }
-    surface_.add(info.time, frame_file("surface", frame));
-    frame_times_.push_back(info.time);
+  newton_.append(newton_pending_);
+  newton_pending_.clear();
+  if (wants_frame(info)) write_frame(analysis, info);
+  // Every file the restart file records is on disk before it is written: it never claims more.
+  RestartRecord r{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}};
+  for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_}) {
+    if (!f->is_open()) continue;
+    f->sync();
+    r.files.push_back(f->record());
   }
-  // Last: the restart file never claims more than the other files hold.
-  RestartRecord r{analysis.checkpoint(), history_rows_, newton_rows_, frame_times_, model_.deck_file};
-  write_file_atomically(dir_ + "/restart.txt", restart_text(r));
+  write_file_atomically(dir_ + "/restart.txt", restart_text(r), Durability::synced);
   if (progress_) {
     if (info.step == 0)
       std::fprintf(progress_, "reference state written\n");
@@ -114,6 +188,9 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
 
 bool RunWriter::stop_requested() { return stop_signal() != 0; }
 
-void RunWriter::write_newton_log() { write_file_atomically(dir_ + "/newton.csv", newton_); }
+void RunWriter::write_newton_log() {
+  newton_.append(newton_pending_);
+  newton_pending_.clear();
+}
 
 }  // namespace tunica

@@ -2,13 +2,18 @@
 // What `tunica run` writes into its output directory, increment by increment:
 //   history.csv   one row per converged increment (and the reference state),
 //   newton.csv    one row per Newton iteration,
-//   meridian.pvd / surface.pvd and vtk/*.vtu   ParaView series,
+//   meridian.pvd / surface.pvd and vtk/*.vtu   ParaView series (output.vtk_every),
+//   frames.csv    one row per .vtu frame file: its byte length and CRC-32,
 // restart.txt (see restart_file.hpp) and the progress lines on the terminal.
-// Every file is rewritten atomically after each increment, restart.txt last,
-// so a stopped or killed run leaves complete files and can be resumed.
+// The CSV files and the .pvd series are appended (append_file.hpp), each frame
+// is written atomically, all are synced, and then restart.txt is rewritten
+// atomically (synced) with the length and CRC-32 of each: a stopped or killed
+// run leaves files a restart can check and continue. The caller holds the
+// folder's lock (output_lock.hpp) for the writer's whole life.
 #include <cstdio>
 #include <string>
 
+#include "output/append_file.hpp"
 #include "output/restart_file.hpp"
 #include "output/vtk_writer.hpp"
 #include "solver/analysis.hpp"
@@ -18,8 +23,9 @@ namespace tunica {
 class RunWriter final : public AnalysisObserver {
 public:
   /// Creates `directory` (and vtk/ in it). `progress` receives the terminal lines (nullptr = quiet).
-  /// With `resume`, continues the files of an earlier run in `directory`, cut back to what
-  /// its restart file records.
+  /// A fresh run first removes the files of an earlier run there (output_folder.hpp). With
+  /// `resume`, checks every file its restart file records (InputError naming a damaged file),
+  /// cuts them back to the recorded lengths and continues them.
   RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume = nullptr);
 
   void on_iteration(const IncrementInfo& info, const IterationRecord& rec) override;
@@ -27,17 +33,22 @@ public:
   void on_increment(const Analysis& analysis, const IncrementInfo& info) override;
   /// True once SIGINT or SIGTERM has been received.
   bool stop_requested() override;
-  /// Writes newton.csv with the attempts since the last converged increment (for a run that stops).
+  /// Appends the attempts since the last converged increment to newton.csv (for a run that stops).
   void write_newton_log();
 
 private:
+  void resume_from(const RestartRecord& r);
+  void write_frame(const Analysis& analysis, const IncrementInfo& info);
+  bool wants_frame(const IncrementInfo& info) const;
+
   const Model& model_;
   std::string dir_;
   std::FILE* progress_;
-  std::string history_, newton_;
+  std::string history_header_, newton_header_;
+  std::string newton_pending_;  ///< rows since the last converged increment
   int history_rows_ = 0, newton_rows_ = 0;
-  PvdSeries meridian_, surface_;
-  std::vector<double> frame_times_;
+  long frames_ = 0;
+  AppendFile history_, newton_, frames_csv_, meridian_pvd_, surface_pvd_;
 };
 
 }  // namespace tunica

@@ -7,8 +7,11 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <type_traits>
 
-#include "output/atomic_file.hpp"
+#include <zlib.h>
+
 
 namespace tunica {
 
@@ -86,46 +89,90 @@ std::vector<CellField> cell_fields(const Analysis& a) {
   return f;
 }
 
-/// Base64 of raw bytes (RFC 4648), as VTK's inline binary format expects.
-void base64(const unsigned char* data, std::size_t n, std::string& out) {
-  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::size_t i = 0;
-  for (; i + 2 < n; i += 3) {
-    const unsigned v = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
-    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], t[v & 63]};
-  }
-  if (i + 1 == n) {
-    const unsigned v = data[i] << 16;
-    out += {t[v >> 18], t[(v >> 12) & 63], '=', '='};
-  } else if (i + 2 == n) {
-    const unsigned v = (data[i] << 16) | (data[i + 1] << 8);
-    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], '='};
-  }
-}
+/// Writes the DataArrays of one .vtu in the chosen format. ascii: the values as text inside the
+/// DataArray element (doubles with 17 significant digits, so they read back exactly). binary and
+/// compressed: an empty DataArray element with the offset of its block in the AppendedData
+/// section at the end of the file, `<AppendedData encoding="raw">_` followed by the blocks.
+/// A binary block is a UInt64 byte count and the bytes; a compressed block is VTK's zlib layout:
+/// UInt64 [number of chunks, chunk size, size of the last chunk if partial (else 0), the
+/// compressed size of each chunk], then the chunks, each compressed on its own.
+class ArrayEncoder {
+public:
+  explicit ArrayEncoder(VtkFormat format) : format_(format) {}
 
-/// A DataArray in VTK's inline binary format: base64 of (UInt64 byte count, values).
-template <class T>
-std::string data_array(const std::string& name, const char* type, int components, const std::vector<T>& v) {
-  std::string s = fmt::format("<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"binary\">\n", type,
-                              name, components);
-  std::vector<unsigned char> bytes(sizeof(std::uint64_t) + v.size() * sizeof(T));
-  const std::uint64_t count = v.size() * sizeof(T);
-  std::memcpy(bytes.data(), &count, sizeof count);
-  if (!v.empty()) std::memcpy(bytes.data() + sizeof count, v.data(), count);
-  base64(bytes.data(), bytes.size(), s);
-  return s + "\n</DataArray>\n";
-}
+  template <class T>
+  std::string array(const std::string& name, const char* type, int components, const std::vector<T>& v) {
+    std::string s = fmt::format("<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"", type, name, components);
+    if (format_ == VtkFormat::ascii) {
+      s += " format=\"ascii\">\n";
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if constexpr (std::is_floating_point_v<T>)
+          fmt::format_to(std::back_inserter(s), "{:.17g}", v[i]);
+        else
+          fmt::format_to(std::back_inserter(s), "{}", static_cast<std::int64_t>(v[i]));
+        s += (i + 1) % 9 == 0 || i + 1 == v.size() ? '\n' : ' ';
+      }
+      return s + "</DataArray>\n";
+    }
+    s += fmt::format(" format=\"appended\" offset=\"{}\"/>\n", appended_.size());
+    const auto* bytes = reinterpret_cast<const unsigned char*>(v.data());
+    const std::uint64_t n = v.size() * sizeof(T);
+    if (format_ == VtkFormat::binary) {
+      put(n);
+      appended_.append(reinterpret_cast<const char*>(bytes), n);
+    } else {
+      compressed_block(bytes, n);
+    }
+    return s;
+  }
+  /// The attribute of the VTKFile element naming the compressor ("" unless compressed).
+  std::string compressor_attribute() const {
+    return format_ == VtkFormat::compressed ? " compressor=\"vtkZLibDataCompressor\"" : "";
+  }
+  /// What follows the grid: the AppendedData section (empty for ascii).
+  std::string appended_section() const {
+    if (format_ == VtkFormat::ascii) return "";
+    return "<AppendedData encoding=\"raw\">\n_" + appended_ + "\n</AppendedData>\n";
+  }
+
+private:
+  void put(std::uint64_t x) { appended_.append(reinterpret_cast<const char*>(&x), sizeof x); }
+  void compressed_block(const unsigned char* data, std::uint64_t n) {
+    constexpr std::uint64_t kChunkBytes = 1 << 15;
+    const std::uint64_t chunks = (n + kChunkBytes - 1) / kChunkBytes;
+    std::vector<std::string> packed(chunks);
+    for (std::uint64_t c = 0; c < chunks; ++c) {
+      const uLong in = static_cast<uLong>(std::min(kChunkBytes, n - c * kChunkBytes));
+      uLongf out = compressBound(in);
+      packed[c].resize(out);
+      if (compress2(reinterpret_cast<Bytef*>(packed[c].data()), &out, data + c * kChunkBytes, in, 6) != Z_OK)
+        throw std::runtime_error("zlib could not compress a ParaView frame");
+      packed[c].resize(out);
+    }
+    put(chunks);
+    put(kChunkBytes);
+    put(n % kChunkBytes);
+    for (const auto& p : packed) put(p.size());
+    for (const auto& p : packed) appended_ += p;
+  }
+
+  VtkFormat format_;
+  std::string appended_;
+};
 
 /// An UnstructuredGrid: cell c has the nodes connectivity[offsets[c−1] … offsets[c]) and type types[c];
 /// each cell field value is repeated `cell_repeat` times (the revolved surface's hoop segments).
 std::string grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
                  const std::vector<std::int64_t>& offsets, const std::vector<std::uint8_t>& types,
                  const std::vector<double>& displacement, const std::vector<CellField>& cells, int cell_repeat,
-                 const std::vector<CellField>& point_fields = {}) {
+                 VtkFormat format, const std::vector<CellField>& point_fields = {}) {
   const std::size_t np = points.size() / 3, nc = offsets.size();
-  std::string s =
-      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
+  ArrayEncoder enc(format);
+  const auto data_array = [&](const std::string& name, const char* type, int components, const auto& v) {
+    return enc.array(name, type, components, v);
+  };
+  std::string s = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                  "header_type=\"UInt64\"" + enc.compressor_attribute() + ">\n<UnstructuredGrid>\n";
   s += fmt::format("<Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n<Points>\n", np, nc);
   s += data_array("Points", "Float64", 3, points) + "</Points>\n<Cells>\n";
   s += data_array("connectivity", "Int64", 1, connectivity);
@@ -148,7 +195,7 @@ std::string grid(const std::vector<double>& points, const std::vector<std::int64
       for (int k = 0; k < cell_repeat; ++k) v.insert(v.end(), f.values.begin() + c, f.values.begin() + c + f.components);
     s += data_array(f.name, "Float64", f.components, v);
   }
-  return s + "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  return s + "</CellData>\n</Piece>\n</UnstructuredGrid>\n" + enc.appended_section() + "</VTKFile>\n";
 }
 
 /// Cell averages of the Gauss-point states of a 3-D model, with the material frame and the Cauchy tensor.
@@ -210,7 +257,7 @@ std::vector<CellField> contact_point_fields(const Analysis& a) {
   return {f};
 }
 
-std::string meridian_vtu(const Analysis& a) {
+std::string meridian_vtu(const Analysis& a, VtkFormat format) {
   const Model& m = a.model();
   const Eigen::VectorXd& u = a.displacement();
   std::vector<double> pts, disp;
@@ -231,10 +278,10 @@ std::string meridian_vtu(const Analysis& a) {
         types.push_back(nen == 2 ? 3 /*VTK_LINE*/ : 9 /*VTK_QUAD*/);
       }
     }
-  return grid(pts, conn, offsets, types, disp, cell_fields(a), 1, contact_point_fields(a));
+  return grid(pts, conn, offsets, types, disp, cell_fields(a), 1, format, contact_point_fields(a));
 }
 
-std::string surface_vtu(const Analysis& a, int segments) {
+std::string surface_vtu(const Analysis& a, int segments, VtkFormat format) {
   const Model& m = a.model();
   const Eigen::VectorXd& u = a.displacement();
   std::vector<double> pts, disp;
@@ -268,10 +315,10 @@ std::string surface_vtu(const Analysis& a, int segments) {
           offsets.push_back(static_cast<std::int64_t>(conn.size()));
         }
       }
-  return grid(pts, conn, offsets, types, disp, cell_fields(a), segments, contact_point_fields(a));
+  return grid(pts, conn, offsets, types, disp, cell_fields(a), segments, format, contact_point_fields(a));
 }
 
-std::string surface3d_vtu(const Analysis& a) {
+std::string surface3d_vtu(const Analysis& a, VtkFormat format) {
   const Model& m = a.model();
   const Eigen::VectorXd& u = a.displacement();
   std::vector<double> pts, disp;
@@ -293,16 +340,13 @@ std::string surface3d_vtu(const Analysis& a) {
         types.push_back(nen == 3 ? 5 /*VTK_TRIANGLE*/ : 9 /*VTK_QUAD*/);
       }
     }
-  return grid(pts, conn, offsets, types, disp, surface_cell_fields(a), 1);
+  return grid(pts, conn, offsets, types, disp, surface_cell_fields(a), 1, format);
 }
 
-void PvdSeries::add(double time, const std::string& file) {
-  entries_.emplace_back(time, file);
-  std::string s = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& [t, f] : entries_)
-    s += fmt::format("<DataSet timestep=\"{:.12g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t, f);
-  s += "</Collection>\n</VTKFile>\n";
-  write_file_atomically(path_, s);
+std::string pvd_head() { return "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"; }
+std::string pvd_tail() { return "</Collection>\n</VTKFile>\n"; }
+std::string pvd_entry(double time, const std::string& file) {
+  return fmt::format("<DataSet timestep=\"{:.12g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", time, file);
 }
 
 }  // namespace tunica

@@ -5,7 +5,7 @@
 // hexahedra; cell data include the cylindrical Cauchy components for all parts. 3-D models: the membrane surface (triangles and
 // quadrilaterals) with cell-averaged strains and stresses in the material frame,
 // the principal Cauchy stresses, the Cauchy tensor and the material directions.
-// One .vtu per increment and a .pvd series of each.
+// One .vtu per frame (output.vtk_every) and a .pvd series of each.
 #include <string>
 #include <vector>
 
@@ -14,25 +14,18 @@
 namespace tunica {
 
 /// The meridian (lines; solids: quadrilaterals) at the current state as VTK XML UnstructuredGrid text.
-std::string meridian_vtu(const Analysis& analysis);
+std::string meridian_vtu(const Analysis& analysis, VtkFormat format = VtkFormat::compressed);
 /// The revolved model (membrane quads, solid hexahedra, `segments` around the axis) as VTK XML text.
-std::string surface_vtu(const Analysis& analysis, int segments);
+std::string surface_vtu(const Analysis& analysis, int segments, VtkFormat format = VtkFormat::compressed);
 
 /// The surface of a 3-D model at the current state as VTK XML text.
-std::string surface3d_vtu(const Analysis& analysis);
+std::string surface3d_vtu(const Analysis& analysis, VtkFormat format = VtkFormat::compressed);
 
-/// A ParaView .pvd collection that lists one dataset per time value.
-class PvdSeries {
-public:
-  explicit PvdSeries(std::string path) : path_(std::move(path)) {}
-  /// Lists datasets already written (when a run resumes) without rewriting the .pvd.
-  void preload(double time, const std::string& relative_file) { entries_.emplace_back(time, relative_file); }
-  /// Adds a dataset (path relative to the .pvd) and rewrites the .pvd atomically.
-  void add(double time, const std::string& relative_file);
-
-private:
-  std::string path_;
-  std::vector<std::pair<double, std::string>> entries_;
-};
+/// A ParaView .pvd collection is pvd_head(), one pvd_entry per dataset, pvd_tail(): the series
+/// grows by writing the new entry and the tail over the old tail (output/append_file.hpp).
+std::string pvd_head();
+std::string pvd_tail();
+/// One dataset (path relative to the .pvd) at `time`.
+std::string pvd_entry(double time, const std::string& relative_file);
 
 }  // namespace tunica

@@ -75,20 +75,20 @@ TEST(ResourceLimits, OversizedDeck) {
 
 TEST(ResourceLimits, RestartFileAnnouncingMoreValuesThanItHolds) {
   const std::string path = testing::TempDir() + "/announcing-restart.txt";
-  std::ofstream(path) << "tunica-restart 2\ndeck d.yaml\nstep 0\nfraction 0x0p+0\ndt 0x0p+0\nincrement 0\n"
-                         "reduced_successes 0\nhistory_rows 1\nnewton_rows 0\nframe_times 1 0x0p+0\n"
+  std::ofstream(path) << "tunica-restart 3\ndeck d.yaml\nstep 0\nfraction 0x0p+0\ndt 0x0p+0\nincrement 0\n"
+                         "reduced_successes 0\nhistory_rows 1\nnewton_rows 0\nframes 1\nfiles 0\n"
                          "step_start_boundary 0\nstep_start_pressure 0\nstep_start_volume 0\nboundary 0\npressure 0\nvolume 0\n"
                          "u 99999999 0x0p+0\n";
   try {
     read_restart(path);
     FAIL() << "accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(path + ":17: malformed restart file: 'u' announces 99999999 values and holds 1"),
+    EXPECT_NE(std::string(e.what()).find(path + ":18: malformed restart file: 'u' announces 99999999 values and holds 1"),
               std::string::npos)
         << e.what();
   }
-  std::ofstream(path) << "tunica-restart 2\ndeck d.yaml\nstep 0\nfraction 0x0p+0\ndt 0x0p+0\nincrement 0\n"
-                         "reduced_successes 0\nhistory_rows 1\nnewton_rows 0\nframe_times 1000000000000 0\n";
+  std::ofstream(path) << "tunica-restart 3\ndeck d.yaml\nstep 0\nfraction 0x0p+0\ndt 0x0p+0\nincrement 0\n"
+                         "reduced_successes 0\nhistory_rows 1\nnewton_rows 0\nframes 1000000000000\n";
   try {
     read_restart(path);
     FAIL() << "accepted";

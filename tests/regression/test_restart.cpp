@@ -67,14 +67,16 @@ int start_and_signal(const std::string& deck, const fs::path& out, int rows, int
 }
 
 /// Every result file is complete. A SIGKILL can land while a file is being written: its
-/// `.tmp` (written, then renamed over the file) stays behind, the file itself is whole, and
-/// the restart writes the same `.tmp` again and renames it; `allow_tmp` accepts such leftovers.
+/// `<file>.tmp.<pid>` (written, then renamed over the file) stays behind, the file itself is
+/// whole, and the restart removes it; `allow_tmp` accepts such leftovers.
 void expect_complete_files(const fs::path& out, bool allow_tmp = false) {
   for (const auto& f : fs::recursive_directory_iterator(out)) {
     if (!f.is_regular_file()) continue;
-    if (allow_tmp && f.path().extension() == ".tmp") continue;
-    const std::string name = f.path().filename().string(), text = read_text(f.path().string());
-    EXPECT_NE(f.path().extension(), ".tmp") << name;
+    const std::string name = f.path().filename().string();
+    const bool temporary = name.find(".tmp.") != std::string::npos;
+    if (allow_tmp && temporary) continue;
+    const std::string text = read_text(f.path().string());
+    EXPECT_FALSE(temporary) << name;
     if (f.path().extension() == ".csv") {
       std::istringstream in(text);
       std::string line;
