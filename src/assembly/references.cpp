@@ -39,8 +39,16 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
     try {
       out.push_back(membrane_reference<N>(X, part.thickness, direction_rule(model, part.frame, block, e)));
     } catch (const BadElement& err) {
+      // Named as in the mesh file where the elements come from one, else by 0-based index.
+      const bool from_file = static_cast<int>(block.tags.size()) == block.size();
       std::string nodes;
-      for (int a = 0; a < N; ++a) nodes += fmt::format("{}{}", a ? ", " : "", n[a]);
+      for (int a = 0; a < N; ++a) {
+        const long tag = n[a] < static_cast<int>(model.node_tags.size()) ? model.node_tags[n[a]] : 0;
+        nodes += fmt::format("{}{}", a ? ", " : "", from_file && tag > 0 ? tag : n[a]);
+      }
+      if (from_file)
+        throw BadElement(fmt::format("{}: element {} ({}, nodes {}): {}", block.file, block.tags[e],
+                                     N == 3 ? "a triangle" : "a quadrilateral", nodes, err.what()));
       throw BadElement(fmt::format("element {} ({}, nodes {}): {}", first_element + e, N == 3 ? "triangle" : "quadrilateral",
                                    nodes, err.what()));
     }

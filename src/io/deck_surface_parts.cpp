@@ -87,13 +87,16 @@ void add_set(Model& m, const std::string& name, std::vector<int> nodes, const De
 }
 
 /// Blocks of a mesh surface with node numbers mapped to global ones.
-void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, bool directions, Part& part) {
+void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, bool directions, Part& part,
+                const std::string& file = "") {
   if (!s.triangles.empty()) {
     ElementBlock b;
     b.kind = ElementKind::tri3;
     for (const auto& t : s.triangles)
       for (int n : t) b.nodes.push_back(global[n]);
     if (directions) b.direction = s.triangle_direction;
+    b.tags = s.triangle_tags;
+    b.file = file;
     part.blocks.push_back(std::move(b));
   }
   if (!s.quads.empty()) {
@@ -102,6 +105,8 @@ void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, b
     for (const auto& q : s.quads)
       for (int n : q) b.nodes.push_back(global[n]);
     if (directions) b.direction = s.quad_direction;
+    b.tags = s.quad_tags;
+    b.file = file;
     part.blocks.push_back(std::move(b));
   }
   for (const auto& b : part.blocks) part.nodes.insert(part.nodes.end(), b.nodes.begin(), b.nodes.end());
@@ -142,9 +147,11 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
         mp.fail("file", fmt::format("the model would have more than {} nodes", kMaxNodes));
       SurfaceMeshCache::Entry entry;
       entry.global.resize(sm.nodes.size());
+      m.node_tags.resize(m.X.size(), 0);
       for (std::size_t i = 0; i < sm.nodes.size(); ++i) {
         entry.global[i] = m.num_nodes();
         m.X.push_back(sm.nodes[i]);
+        m.node_tags.push_back(i < sm.node_tags.size() ? sm.node_tags[i] : 0);
       }
       for (const auto& [name, nodes] : sm.node_sets) {
         std::vector<int> g;
@@ -159,11 +166,11 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
     if (s == surfaces.end()) {
       std::string list;
       for (const auto& x : surfaces) list += (list.empty() ? "" : ", ") + printable(x.name);
-      mp.fail("surface", "the file has no physical surface '" + mp.text("surface") + "' (it has: " + list + ")");
+      mp.fail("surface", path + " has no physical surface '" + printable(mp.text("surface")) + "' (it has: " + list + ")");
     }
     if (const std::string why = check_surface(it->second.mesh, *s); !why.empty())
       mp.fail("surface", path + ": " + why);  // `why` names the surface
-    add_blocks(*s, it->second.global, part.frame.type == FrameRule::Type::mesh, part);
+    add_blocks(*s, it->second.global, part.frame.type == FrameRule::Type::mesh, part, path);
   } else {
     auto gen = surface_generator_types().find(type);
     if (gen == surface_generator_types().end())
@@ -199,13 +206,16 @@ void finish_surface_parts(const DeckNode& parts, Model& m) {
       for (int v : b.nodes)
         if (map[v] < 0) map[v] = 0;
   std::vector<Eigen::Vector3d> X;
+  std::vector<long> tags;
   for (int i = 0; i < m.num_nodes(); ++i)
     if (map[i] == 0) {
       map[i] = n++;
       X.push_back(m.X[i]);
+      tags.push_back(i < static_cast<int>(m.node_tags.size()) ? m.node_tags[i] : 0);
     }
   if (n != m.num_nodes()) {
     m.X = std::move(X);
+    m.node_tags = std::move(tags);
     for (auto& part : m.parts) {
       for (auto& b : part.blocks)
         for (int& v : b.nodes) v = map[v];

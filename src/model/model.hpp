@@ -44,6 +44,8 @@ struct ElementBlock {
   ElementKind kind = ElementKind::axisym2;
   std::vector<int> nodes;                  ///< global node numbers, nodes_per_element(kind) per element
   std::vector<Eigen::Vector3d> direction;  ///< per-element direction 1 from the mesh file (frame `mesh`), else empty
+  std::vector<long> tags;                  ///< per-element tags as written in the mesh file, else empty
+  std::string file;                        ///< the mesh file the elements come from, else empty
   int size() const { return static_cast<int>(nodes.size()) / nodes_per_element(kind); }
   const int* element(int e) const { return nodes.data() + nodes_per_element(kind) * e; }
 };
@@ -211,6 +213,9 @@ struct Model {
   UnitSystem units;
   Geometry geometry = Geometry::axisymmetric;
   std::vector<Eigen::Vector3d> X;  ///< reference node positions (axisymmetric: (r, z, 0))
+  /// Per node, its tag in the mesh file it was read from (0: a generated node); may be
+  /// shorter than X (nodes past its end are generated). For messages only.
+  std::vector<long> node_tags;
   /// Per node: the DOF index of its slope unknown u′_r (u′_z follows), −1 if the node is on no
   /// shell part; empty if the model has no shell part (see the DOF map above).
   std::vector<int> slope_dof;

@@ -249,3 +249,19 @@ TEST(BadMeshes, NodeSetsOfOneNameFromTwoPhysicalGroupsAreRefused) {
                           "$EndNodes\n$Elements\n4\n1 1 2 10 1 1 2\n5 1 2 11 2 3 4\n" + kGood + "$EndElements\n";
   expect_error("two-edges", two, "", "", "edge", "physical groups 10 (dimension 1) and 11 (dimension 1) are both named 'edge'");
 }
+
+TEST(BadMeshes, AFoldedQuadrilateralIsNamedByTheMeshFileAndItsTags) {
+  // A quadrilateral of the shipped quarter cylinder (4.1 binary) with a node moved by a
+  // corrupted byte: it passes the surface checks and is folded at a Gauss point.
+  const fs::path dir = scratch() / "folded";
+  fs::create_directories(dir);
+  fs::copy_file(fs::path(TUNICA_SOURCE_DIR) / "tests/data/bad-meshes/folded-quad-v41-binary.msh", dir / "square.msh",
+                fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "deck.yaml") << kDeck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.wall.mesh': part 'wall': " + (dir / "square.msh").string() +
+                          ": element 18 (a quadrilateral, nodes 19, 13, 14, 20): folded quadrilateral"),
+            std::string::npos)
+      << o.output;
+}
