@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Corruption campaign of the .msh reader through the command line.
 
-Usage: python3 tools/mesh-corruption.py TUNICA [TRIALS] [WORKDIR]
+Usage: python3 tools/mesh-corruption.py TUNICA [TRIALS] [WORKDIR] [ONLY]
 
 For each shipped mesh (tests/data/meshes/**/*.msh and the aneurysm example meshed
 from examples/meshes/aneurysm.geo with `tunica mesh`, in 4.1 and 2.2, ASCII and
@@ -9,7 +9,8 @@ binary), writes TRIALS copies with 8 random bytes overwritten (seeded, so the ru
 is repeatable), and runs `tunica check` on a deck that names each. A trial passes
 when tunica exits 0 (the damage left a valid mesh) or 2 with one printable line
 naming the mesh file, within 10 s; a crash, a hang, any other exit code or message
-fails it. Prints one row per mesh and exits 1 if any trial failed.
+fails it. ONLY keeps the meshes whose file name contains it. Prints one row per mesh
+and exits 1 if any trial failed.
 """
 import os
 import random
@@ -45,6 +46,7 @@ def main() -> int:
     tunica = os.path.abspath(sys.argv[1])
     trials = int(sys.argv[2]) if len(sys.argv) > 2 else 1000
     work = sys.argv[3] if len(sys.argv) > 3 else "/tmp/tunica-mesh-corruption"
+    only = sys.argv[4] if len(sys.argv) > 4 else ""
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     os.makedirs(work, exist_ok=True)
     meshes = []
@@ -53,10 +55,13 @@ def main() -> int:
     for version in ("4.1", "2.2"):
         for binary in (False, True):
             out = os.path.join(work, f"aneurysm-v{version}-{'binary' if binary else 'ascii'}.msh")
+            if only not in os.path.basename(out):
+                continue
             cmd = [tunica, "mesh", os.path.join(root, "examples", "meshes", "aneurysm.geo"), "-o", out,
                    "--msh-version", version] + (["--binary"] if binary else [])
             subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
             meshes.append(out)
+    meshes = [m for m in meshes if only in os.path.basename(m)]
     failed = 0
     print(f"| mesh | bytes | trials | read | refused | failed | slowest check (s) |")
     print(f"|---|---|---|---|---|---|---|", flush=True)
