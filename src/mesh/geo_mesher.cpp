@@ -1,15 +1,14 @@
-// How the Gmsh 4.8 API reports errors: gmsh::initialize sets "General.AbortOnError"
-// to 2, with which every error Gmsh reports is thrown as a C++ exception of type
-// std::string holding the message (e.g. "'x.geo', line 1: syntax error (a)"). The child
-// sets it to 0 (errors are only logged, the parser finishes), records Gmsh's messages
-// with gmsh::logger and turns the first "Error: ..." after each API call into its
-// failure message, which it sends to the parent through a pipe as "LINE\tMESSAGE".
+// The parent's side of meshing a script: tunica-gmsh (src/app/gmsh_child.cpp) runs
+// Gmsh in a process of its own, started by fork and exec. Between the two the child
+// calls only async-signal-safe functions, as POSIX requires after fork in a process
+// with threads (the element loops' OpenMP team, a caller's threads): nothing of the
+// parent's locks or library state reaches Gmsh.
 #include "mesh/geo_mesher.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/prctl.h>
 #include <fmt/format.h>
-#include <gmsh.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -31,6 +30,9 @@ namespace tunica {
 
 namespace {
 
+constexpr int kReportFd = 3;      // where tunica-gmsh writes its failure message
+constexpr int kExecFailed = 127;  // the child's status when exec failed
+
 std::mutex gmsh_mutex;  // one child at a time: the temporary folder and the pipe are per call anyway
 
 /// The parent received SIGINT or SIGTERM while Gmsh ran: thrown after the child has been
@@ -39,84 +41,19 @@ struct SignalDuringMeshing {
   int signal;
 };
 
-/// A failure inside the child: its text goes to the parent.
-struct ChildFailure {
-  std::string message;
-};
-
-/// Runs a Gmsh API call; throws ChildFailure on an exception or on an error it logged.
-class Reporter {
-public:
-  Reporter() {
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
-    seen_ = log.size();
+/// The helper executable that runs Gmsh: beside the running executable (tunica, or an
+/// installed copy), else where the build put it (tests and benchmarks run from
+/// subfolders of the build).
+std::string helper_path() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path beside = self.parent_path() / "tunica-gmsh";
+    if (::access(beside.c_str(), X_OK) == 0) return beside.string();
   }
-  template <class F>
-  void call(const std::string& doing, F&& f) {
-    try {
-      f();
-    } catch (const std::string& s) {
-      throw ChildFailure{"Gmsh error while " + doing + ": " + s};
-    } catch (const std::exception& e) {
-      throw ChildFailure{"Gmsh error while " + doing + ": " + e.what()};
-    } catch (...) {
-      throw ChildFailure{"Gmsh error while " + doing + ": unknown error"};
-    }
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
-    for (std::size_t i = seen_; i < log.size(); ++i)
-      if (log[i].rfind("Error: ", 0) == 0) throw ChildFailure{"Gmsh error while " + doing + ": " + log[i].substr(7)};
-    seen_ = log.size();
-  }
-
-private:
-  std::size_t seen_ = 0;
-};
-
-/// The child's work. Returns its exit status; the failure text goes to `fd`.
-int child_main(const std::string& path, const std::string& out, const GeoMeshFormat& format, int fd) {
-  std::string message;
-  try {
-    try {
-      gmsh::initialize(0, nullptr, false);  // argc, argv, readConfigFiles
-      gmsh::option::setNumber("General.Terminal", 0);
-      gmsh::option::setNumber("General.Verbosity", 2);
-      gmsh::option::setNumber("General.AbortOnError", 0);
-      gmsh::option::setNumber("General.NumThreads", 1);
-      gmsh::logger::start();
-    } catch (...) {
-      throw ChildFailure{"could not initialize Gmsh"};
-    }
-    Reporter r;
-    r.call("reading the script", [&] { gmsh::open(path); });
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> tags, nodes;
-    gmsh::vectorpair surfaces;
-    r.call("reading the elements", [&] {
-      gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
-      gmsh::model::getEntities(surfaces, 2);
-    });
-    if (types.empty() && !surfaces.empty()) r.call("meshing the surfaces", [&] { gmsh::model::mesh::generate(2); });
-    r.call("writing the mesh", [&] {
-      gmsh::option::setNumber("Mesh.MshFileVersion", format.version);
-      gmsh::option::setNumber("Mesh.Binary", format.binary ? 1 : 0);
-      gmsh::option::setNumber("Mesh.SaveAll", 0);
-      gmsh::write(out);
-    });
-    return 0;
-  } catch (const ChildFailure& f) {
-    message = f.message;
-  } catch (...) {
-    message = "Gmsh error: unknown failure";
-  }
-  std::size_t done = 0;
-  while (done < message.size()) {
-    const ssize_t n = ::write(fd, message.data() + done, message.size() - done);
-    if (n <= 0) break;
-    done += static_cast<std::size_t>(n);
-  }
-  return 2;
+  if (::access(TUNICA_GMSH_HELPER, X_OK) == 0) return TUNICA_GMSH_HELPER;
+  throw std::runtime_error("cannot find the Gmsh helper tunica-gmsh beside the executable or at " +
+                           std::string(TUNICA_GMSH_HELPER) + " (it is built with tunica)");
 }
 
 /// SIGINT / SIGTERM while Gmsh runs: remembered here, so that the parent can end the
@@ -178,6 +115,11 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
   const std::string out = dir.path + "/mesh.msh";
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+  // Everything the child needs is made before fork: it may not allocate.
+  const std::string helper = helper_path();
+  std::string version = format.version == 2.2 ? "2.2" : "4.1", binary = format.binary ? "1" : "0";
+  std::string program = helper, script = path, target = out;
+  std::vector<char*> argv{program.data(), script.data(), target.data(), version.data(), binary.data(), nullptr};
   std::fflush(nullptr);
   const pid_t parent = ::getpid();
   SignalGuard signals;
@@ -188,7 +130,8 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
     throw std::runtime_error(std::string("cannot start the Gmsh process: ") + std::strerror(errno));
   }
   if (pid == 0) {
-    // The child ends with its parent, whatever ends the parent.
+    // Async-signal-safe calls only, up to exec. The child ends with its parent, whatever
+    // ends the parent.
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(3);
     ::setpgid(0, 0);  // a group of its own, with the commands the script runs: ended together
@@ -196,8 +139,29 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
     dfl.sa_handler = SIG_DFL;
     sigaction(SIGINT, &dfl, nullptr);
     sigaction(SIGTERM, &dfl, nullptr);
-    ::close(fds[0]);
-    ::_exit(child_main(path, out, format, fds[1]));
+    // In a group of its own, Gmsh is a background job: reading from or writing to the
+    // terminal would stop it (SIGTTIN, SIGTTOU). Its input is /dev/null and the two are
+    // ignored (an ignored signal stays ignored across exec).
+    struct sigaction ign {};
+    ign.sa_handler = SIG_IGN;
+    sigaction(SIGTTIN, &ign, nullptr);
+    sigaction(SIGTTOU, &ign, nullptr);
+    const int null_fd = ::open("/dev/null", O_RDONLY);
+    if (null_fd >= 0 && null_fd != 0) {
+      ::dup2(null_fd, 0);
+      if (null_fd != kReportFd && null_fd != fds[1]) ::close(null_fd);
+    }
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    // The report pipe becomes descriptor 3, open across exec.
+    if (fds[1] == kReportFd) {
+      ::fcntl(kReportFd, F_SETFD, 0);
+    } else if (::dup2(fds[1], kReportFd) < 0) {
+      ::_exit(kExecFailed);
+    }
+    ::execv(helper.c_str(), argv.data());
+    ::_exit(kExecFailed);
   }
   ::close(fds[1]);
   ::setpgid(pid, pid);  // also here: whichever of the two runs first
@@ -212,22 +176,53 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
     ::close(fds[0]);
     throw SignalDuringMeshing{pending_signal};
   };
+  // Read the report pipe until Gmsh has exited and the pipe is drained. The pipe alone
+  // does not say when: a command the script left running in the background holds its
+  // write end too. A Gmsh stopped by a signal (SIGSTOP) is ended rather than waited for.
+  bool exited = false;
   for (;;) {
-    const ssize_t n = ::read(fds[0], buf, sizeof buf);
+    struct pollfd ready {fds[0], POLLIN, 0};
+    const int r = ::poll(&ready, 1, exited ? 0 : 100);
     stop_child_if_signalled();
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    if (message.size() < 65536) message.append(buf, static_cast<std::size_t>(n));
+    if (r < 0 && errno == EINTR) continue;
+    if (r > 0) {
+      const ssize_t n = ::read(fds[0], buf, sizeof buf);
+      stop_child_if_signalled();
+      if (n < 0 && errno == EINTR) continue;
+      if (n > 0) {
+        if (message.size() < 65536) message.append(buf, static_cast<std::size_t>(n));
+        continue;
+      }
+    } else if (!exited) {
+      const pid_t w = ::waitpid(pid, &status, WNOHANG | WUNTRACED);
+      if (w == pid && WIFSTOPPED(status)) {
+        const int sig = WSTOPSIG(status);
+        ::kill(-pid, SIGKILL);
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        ::close(fds[0]);
+        fail(fmt::format("Gmsh was stopped by signal {} ({}) while meshing the script, and was ended", sig,
+                         strsignal(sig)));
+      }
+      exited = w == pid;
+      continue;
+    }
+    // End of the pipe (or nothing left to read after Gmsh exited).
+    if (exited) break;
+    for (;;) {
+      const pid_t w = ::waitpid(pid, &status, 0);
+      stop_child_if_signalled();
+      if (w >= 0 || errno != EINTR) break;
+    }
+    break;
   }
-  for (;;) {
-    const pid_t r = ::waitpid(pid, &status, 0);
-    stop_child_if_signalled();
-    if (r >= 0 || errno != EINTR) break;
-  }
+  ::kill(-pid, SIGKILL);  // commands the script left running end with Gmsh
   ::close(fds[0]);
   if (WIFSIGNALED(status))
     fail(fmt::format("Gmsh stopped with signal {} ({}) while meshing the script", WTERMSIG(status),
                      strsignal(WTERMSIG(status))));
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kExecFailed && message.empty())
+    throw std::runtime_error("cannot start the Gmsh helper " + helper);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     if (message.empty()) message = fmt::format("Gmsh exited with status {} while meshing the script", WEXITSTATUS(status));
     // Gmsh's "'file', line N: what" gives the line in the script.

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,8 @@
 #include <map>
 #include <set>
 #include <thread>
+#include <atomic>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -291,4 +295,56 @@ TEST(GmshReader, ConcurrentReadsAreSerialized) {
   EXPECT_EQ(counts[2], 121u);
   EXPECT_EQ(counts[1], 6u);
   EXPECT_EQ(counts[3], 6u);
+}
+
+TEST(GmshReader, ScriptsAreMeshedWhileOtherThreadsThrowAndAllocate) {
+  // Gmsh runs in a process started by fork and exec (geo_mesher.cpp): whatever the
+  // other threads hold at the fork (the unwinder's lock of a thread throwing, the
+  // allocator's), the new process image inherits none of it.
+  const std::string geo = write("busy.geo", quarter_cylinder_geo());
+  std::atomic<bool> stop{false};
+  std::atomic<long> thrown{0};
+  std::vector<std::thread> noise;
+  for (int t = 0; t < 2; ++t)
+    noise.emplace_back([&] {
+      while (!stop) {
+        try {
+          throw std::runtime_error(std::string(200, 'x'));
+        } catch (const std::exception&) {
+          ++thrown;
+        }
+      }
+    });
+  std::vector<std::size_t> counts;
+  for (int k = 0; k < 8; ++k) counts.push_back(read_script(geo).nodes.size());
+  stop = true;
+  for (auto& th : noise) th.join();
+  EXPECT_GT(thrown.load(), 0);
+  for (std::size_t c : counts) EXPECT_EQ(c, 121u);
+}
+
+TEST(GmshReader, ACommandTheScriptLeavesRunningNeitherBlocksNorOutlivesTheRead) {
+  // A background command started by the script's System holds the report pipe open;
+  // the read ends when Gmsh has, and the command is ended with it.
+  const fs::path pidfile = scratch() / "background.pid";
+  const std::string geo =
+      write("background.geo", quarter_cylinder_geo("System \"sleep 30 & echo $! > " + pidfile.string() + "\";\n"));
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_EQ(read_script(geo).nodes.size(), 121u);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
+  std::ifstream in(pidfile);
+  pid_t pid = 0;
+  ASSERT_TRUE(in >> pid) << "the script's command did not run";
+  // Ended (and reaped by init once orphaned): give the kernel a moment.
+  bool gone = false;
+  for (int i = 0; i < 50 && !gone; ++i) {
+    gone = ::kill(pid, 0) != 0 || std::ifstream("/proc/" + std::to_string(pid) + "/stat").peek() == EOF;
+    if (!gone) {
+      std::string stat;
+      std::getline(std::ifstream("/proc/" + std::to_string(pid) + "/stat"), stat);
+      gone = stat.find(") Z") != std::string::npos;  // a zombie: ended, not yet reaped
+    }
+    if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  EXPECT_TRUE(gone) << "sleep " << pid << " outlived the read";
 }
