@@ -186,7 +186,10 @@ const ComponentSpec& output_spec() {
                                 "(what VTK's own XML writers produce; smallest), binary = appended raw binary, "
                                 "ascii = numbers as text (largest, readable in an editor)"),
                            {"compressed", "binary", "ascii"}),
-                    "compressed")}};
+                    "compressed"),
+       structured("vtk_fields", "list",
+                  "the arrays each .vtu frame holds, by name without the unit suffix (e.g. [displacement, "
+                  "sigma_max, thickness]; the names are listed in the user guide, §5); default: all")}};
   return s;
 }
 
@@ -523,6 +526,25 @@ void read_output(const DeckNode& deck, Model& m) {
   m.output.vtk_every = static_cast<int>(p.integer("vtk_every"));
   const std::string format = p.text("vtk_format");
   m.output.vtk_format = format == "ascii" ? VtkFormat::ascii : format == "binary" ? VtkFormat::binary : VtkFormat::compressed;
+  if (out.has("vtk_fields")) {
+    const DeckNode list = out["vtk_fields"];
+    if (!list.is_sequence()) list.fail("expected a list of array names, e.g. [displacement, thickness]");
+    const auto& names = vtk_field_names(m.geometry);
+    for (const auto& item : list.items()) {
+      if (!item.is_scalar()) item.fail("expected an array name");
+      const std::string name = item.as_string();
+      if (std::find(names.begin(), names.end(), name) == names.end()) {
+        std::string known;
+        for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+        item.fail(fmt::format("'{}' is not an array of {} model's frames (names without the unit suffix): {}", name,
+                              m.geometry == Geometry::axisymmetric ? "an axisymmetric" : "a 3-D", known));
+      }
+      if (std::find(m.output.vtk_fields.begin(), m.output.vtk_fields.end(), name) != m.output.vtk_fields.end())
+        item.fail("'" + name + "' is listed twice");
+      m.output.vtk_fields.push_back(name);
+    }
+    if (m.output.vtk_fields.empty()) list.fail("the list is empty: leave vtk_fields out for every array, or set vtk: false");
+  }
   if (!out.has("history")) return;
   std::set<std::string> columns;
   for (const auto& node : out["history"].items()) {

@@ -34,4 +34,16 @@ void Model::number_slope_dofs() {
   }
 }
 
+const std::vector<std::string>& vtk_field_names(Geometry g) {
+  static const std::vector<std::string> axisymmetric = {
+      "displacement", "contact_pressure", "lambda_hoop", "lambda_meridional", "lambda_thickness", "S_hoop",
+      "S_meridional", "sigma_hoop", "sigma_meridional", "thickness", "part", "sigma_rr", "sigma_thetatheta",
+      "sigma_zz", "sigma_rz", "hydrostatic_pressure", "J", "M_hoop", "M_meridional", "sigma_hoop_outer",
+      "sigma_hoop_inner", "sigma_meridional_outer", "sigma_meridional_inner"};
+  static const std::vector<std::string> three_d = {
+      "displacement", "lambda_1", "lambda_2", "lambda_3", "E_1", "E_2", "E_12", "S_1", "S_2", "S_12", "sigma_1",
+      "sigma_2", "sigma_max", "sigma_min", "thickness", "part", "direction_1", "direction_2", "cauchy_stress"};
+  return g == Geometry::axisymmetric ? axisymmetric : three_d;
+}
+
 }  // namespace tunica

@@ -205,7 +205,13 @@ struct OutputSettings {
   int vtk_segments = 48;  ///< hoop subdivisions of the revolved surface (axisymmetric)
   int vtk_every = 1;      ///< a frame every this many increments of a step (and at each step's end)
   VtkFormat vtk_format = VtkFormat::compressed;
+  std::vector<std::string> vtk_fields;  ///< the arrays a frame holds, by vtk_field_names; empty: all
 };
+
+/// The arrays a .vtu frame of a model of geometry `g` can hold, by name without the unit
+/// suffix (`S_hoop`, not `S_hoop_N_per_mm2`), in the order the writer writes them
+/// (output/vtk_writer.cpp); `output.vtk_fields` selects among them.
+const std::vector<std::string>& vtk_field_names(Geometry g);
 
 struct Model {
   std::string deck_file;

@@ -89,6 +89,27 @@ std::vector<CellField> cell_fields(const Analysis& a) {
   return f;
 }
 
+/// The arrays output.vtk_fields selects: a name as written (with its unit suffix) matches a
+/// selected name alone or followed by the suffix of the model's pressure, length or force unit.
+class FieldFilter {
+public:
+  explicit FieldFilter(const Model& m)
+      : selected_(m.output.vtk_fields),
+        suffixes_{"", unit_suffix(m.units, Dimension::pressure), unit_suffix(m.units, Dimension::length),
+                  unit_suffix(m.units, Dimension::force)} {}
+  bool operator()(const std::string& array) const {
+    if (selected_.empty()) return true;
+    for (const auto& name : selected_)
+      for (const auto& suffix : suffixes_)
+        if (array == name + suffix) return true;
+    return false;
+  }
+
+private:
+  const std::vector<std::string>& selected_;
+  std::vector<std::string> suffixes_;
+};
+
 /// Writes the DataArrays of one .vtu in the chosen format. ascii: the values as text inside the
 /// DataArray element (doubles with 17 significant digits, so they read back exactly). binary and
 /// compressed: an empty DataArray element with the offset of its block in the AppendedData
@@ -165,7 +186,7 @@ private:
 std::string grid(const std::vector<double>& points, const std::vector<std::int64_t>& connectivity,
                  const std::vector<std::int64_t>& offsets, const std::vector<std::uint8_t>& types,
                  const std::vector<double>& displacement, const std::vector<CellField>& cells, int cell_repeat,
-                 VtkFormat format, const std::vector<CellField>& point_fields = {}) {
+                 VtkFormat format, const FieldFilter& wanted, const std::vector<CellField>& point_fields = {}) {
   const std::size_t np = points.size() / 3, nc = offsets.size();
   ArrayEncoder enc(format);
   const auto data_array = [&](const std::string& name, const char* type, int components, const auto& v) {
@@ -178,9 +199,10 @@ std::string grid(const std::vector<double>& points, const std::vector<std::int64
   s += data_array("connectivity", "Int64", 1, connectivity);
   s += data_array("offsets", "Int64", 1, offsets);
   s += data_array("types", "UInt8", 1, types);
-  s += "</Cells>\n<PointData Vectors=\"displacement\">\n";
-  s += data_array("displacement", "Float64", 3, displacement);
+  s += wanted("displacement") ? "</Cells>\n<PointData Vectors=\"displacement\">\n" : "</Cells>\n<PointData>\n";
+  if (wanted("displacement")) s += data_array("displacement", "Float64", 3, displacement);
   for (const auto& f : point_fields) {  // one value per model node, repeated like the points (cell_repeat)
+    if (!wanted(f.name)) continue;
     std::vector<double> v;
     v.reserve(f.values.size() * cell_repeat);
     for (std::size_t c = 0; c < f.values.size(); c += f.components)
@@ -189,6 +211,7 @@ std::string grid(const std::vector<double>& points, const std::vector<std::int64
   }
   s += "</PointData>\n<CellData>\n";
   for (const auto& f : cells) {
+    if (!wanted(f.name)) continue;
     std::vector<double> v;
     v.reserve(f.values.size() * cell_repeat);
     for (std::size_t c = 0; c < f.values.size(); c += f.components)
@@ -278,7 +301,7 @@ std::string meridian_vtu(const Analysis& a, VtkFormat format) {
         types.push_back(nen == 2 ? 3 /*VTK_LINE*/ : 9 /*VTK_QUAD*/);
       }
     }
-  return grid(pts, conn, offsets, types, disp, cell_fields(a), 1, format, contact_point_fields(a));
+  return grid(pts, conn, offsets, types, disp, cell_fields(a), 1, format, FieldFilter(m), contact_point_fields(a));
 }
 
 std::string surface_vtu(const Analysis& a, int segments, VtkFormat format) {
@@ -315,7 +338,7 @@ std::string surface_vtu(const Analysis& a, int segments, VtkFormat format) {
           offsets.push_back(static_cast<std::int64_t>(conn.size()));
         }
       }
-  return grid(pts, conn, offsets, types, disp, cell_fields(a), segments, format, contact_point_fields(a));
+  return grid(pts, conn, offsets, types, disp, cell_fields(a), segments, format, FieldFilter(m), contact_point_fields(a));
 }
 
 std::string surface3d_vtu(const Analysis& a, VtkFormat format) {
@@ -340,7 +363,7 @@ std::string surface3d_vtu(const Analysis& a, VtkFormat format) {
         types.push_back(nen == 3 ? 5 /*VTK_TRIANGLE*/ : 9 /*VTK_QUAD*/);
       }
     }
-  return grid(pts, conn, offsets, types, disp, surface_cell_fields(a), 1, format);
+  return grid(pts, conn, offsets, types, disp, surface_cell_fields(a), 1, format, FieldFilter(m));
 }
 
 std::string pvd_head() { return "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"; }

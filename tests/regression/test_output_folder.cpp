@@ -20,6 +20,7 @@
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
 #include "../support/vtu.hpp"
+#include "model/model.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
@@ -290,4 +291,84 @@ TEST(OutputFolder, EveryVtkFormatDecodesToTheSameValues) {
     }
     EXPECT_GE(arrays, 20) << series;
   }
+}
+
+namespace {
+/// The names of a frame's Float64 arrays (Points excluded), in file order.
+std::vector<std::string> float_arrays(const std::string& vtu) {
+  std::vector<std::string> names;
+  const std::string key = "type=\"Float64\" Name=\"";
+  for (auto at = vtu.find(key); at != std::string::npos; at = vtu.find(key, at + 1)) {
+    const auto begin = at + key.size();
+    const std::string name = vtu.substr(begin, vtu.find('"', begin) - begin);
+    if (name != "Points") names.push_back(name);
+  }
+  return names;
+}
+}  // namespace
+
+TEST(OutputFolder, VtkFieldsSelectTheArraysOfEachFrame) {
+  const fs::path dir = scratch("fields");
+  // Every array the writer writes is a name of vtk_field_names with its unit suffix (and the
+  // contact pressure, which only models with contact have): the list the deck checks against.
+  ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "all.yaml", "  vtk_every: 100\n"), dir / "all")).exit_code, 0);
+  const std::vector<std::string> all = float_arrays(read_text((dir / "all" / "vtk/surface_000002.vtu").string()));
+  const std::vector<std::string> expected = {
+      "displacement", "lambda_hoop", "lambda_meridional", "lambda_thickness", "S_hoop_N_per_mm2",
+      "S_meridional_N_per_mm2", "sigma_hoop_N_per_mm2", "sigma_meridional_N_per_mm2", "thickness_mm", "part",
+      "sigma_rr_N_per_mm2", "sigma_thetatheta_N_per_mm2", "sigma_zz_N_per_mm2", "sigma_rz_N_per_mm2",
+      "hydrostatic_pressure_N_per_mm2", "J", "M_hoop_N", "M_meridional_N", "sigma_hoop_outer_N_per_mm2",
+      "sigma_hoop_inner_N_per_mm2", "sigma_meridional_outer_N_per_mm2", "sigma_meridional_inner_N_per_mm2"};
+  EXPECT_EQ(all, expected);
+  // A selection: only those arrays, with the same values.
+  ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "some.yaml", "  vtk_every: 100\n  vtk_fields: [thickness, sigma_hoop]\n"),
+                                       dir / "some"))
+                .exit_code,
+            0);
+  for (const char* series : {"meridian", "surface"}) {
+    const std::string file = std::string("vtk/") + series + "_000002.vtu";
+    const std::string some = read_text((dir / "some" / file).string());
+    EXPECT_EQ(float_arrays(some), (std::vector<std::string>{"sigma_hoop_N_per_mm2", "thickness_mm"})) << series;
+    const std::string full = read_text((dir / "all" / file).string());
+    EXPECT_EQ(decode_float64(some, "thickness_mm"), decode_float64(full, "thickness_mm")) << series;
+    EXPECT_EQ(some.find("Vectors=\"displacement\""), std::string::npos) << series;
+    EXPECT_LT(some.size(), full.size()) << series;
+  }
+  // A name that is not an array: the key, the name and the names there are.
+  const Outcome bad = run_cli("check " + deck(dir, "bad.yaml", "  vtk_fields: [displacement, sigma_max]\n"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("output.vtk_fields"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("'sigma_max' is not an array of an axisymmetric model's frames"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("sigma_meridional_inner"), std::string::npos) << bad.output;
+  const Outcome twice = run_cli("check " + deck(dir, "twice.yaml", "  vtk_fields: [J, J]\n"));
+  EXPECT_EQ(twice.exit_code, 2) << twice.output;
+  EXPECT_NE(twice.output.find("'J' is listed twice"), std::string::npos) << twice.output;
+}
+
+TEST(OutputFolder, VtkFieldsOfA3dModelAndTheUserGuidesList) {
+  const fs::path dir = scratch("fields3d");
+  std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere-3d.yaml");
+  ASSERT_NE(text.find("output:\n"), std::string::npos);
+  const std::string all_deck = (dir / "all.yaml").string(), some_deck = (dir / "some.yaml").string();
+  std::ofstream(all_deck) << replace(text, "output:\n", "output:\n  vtk_every: 1000\n");
+  std::ofstream(some_deck) << replace(text, "output:\n", "output:\n  vtk_every: 1000\n  vtk_fields: [sigma_max, direction_1]\n");
+  ASSERT_EQ(run_cli("run " + run_quiet(all_deck, dir / "all")).exit_code, 0);
+  ASSERT_EQ(run_cli("run " + run_quiet(some_deck, dir / "some")).exit_code, 0);
+  const std::string full = read_text((dir / "all" / "vtk/surface_000001.vtu").string());
+  const std::string some = read_text((dir / "some" / "vtk/surface_000001.vtu").string());
+  EXPECT_EQ(float_arrays(full),
+            (std::vector<std::string>{"displacement", "lambda_1", "lambda_2", "lambda_3", "E_1", "E_2", "E_12",
+                                      "S_1_N_per_mm2", "S_2_N_per_mm2", "S_12_N_per_mm2", "sigma_1_N_per_mm2",
+                                      "sigma_2_N_per_mm2", "sigma_max_N_per_mm2", "sigma_min_N_per_mm2", "thickness_mm",
+                                      "part", "direction_1", "direction_2", "cauchy_stress_N_per_mm2"}));
+  EXPECT_EQ(float_arrays(some), (std::vector<std::string>{"sigma_max_N_per_mm2", "direction_1"}));
+  EXPECT_EQ(decode_float64(some, "sigma_max_N_per_mm2"), decode_float64(full, "sigma_max_N_per_mm2"));
+  // The names the deck accepts are the ones the user guide lists.
+  const std::string guide = read_text(std::string(TUNICA_SOURCE_DIR) + "/docs/user-guide.md");
+  const auto at = guide.find("`output.vtk_fields` selects");
+  ASSERT_NE(at, std::string::npos);
+  const std::string paragraph = guide.substr(at, guide.find("\n\n", at) - at);
+  for (auto g : {tunica::Geometry::axisymmetric, tunica::Geometry::three_d})
+    for (const auto& name : tunica::vtk_field_names(g))
+      EXPECT_NE(paragraph.find("`" + name + "`"), std::string::npos) << name << " is not in the user guide's list";
 }
