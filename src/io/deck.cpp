@@ -187,6 +187,13 @@ const ComponentSpec& output_spec() {
                                 "ascii = numbers as text (largest, readable in an editor)"),
                            {"compressed", "binary", "ascii"}),
                     "compressed"),
+       with_default(at_most(at_least(number("checkpoint_every_s", Dimension::dimensionless,
+                                            "wall-clock seconds between restart checkpoints (restart.txt, with every "
+                                            "file synced to disk); 0: after every increment. A checkpoint is also "
+                                            "taken at the end of each step and when the run stops"),
+                                     0),
+                            86400),
+                    "1"),
        structured("vtk_fields", "list",
                   "the arrays each .vtu frame holds, by name without the unit suffix (e.g. [displacement, "
                   "sigma_max, thickness]; the names are listed in the user guide, §5); default: all")}};
@@ -524,6 +531,7 @@ void read_output(const DeckNode& deck, Model& m) {
   m.output.vtk = p.boolean("vtk");
   m.output.vtk_segments = static_cast<int>(p.integer("vtk_segments"));
   m.output.vtk_every = static_cast<int>(p.integer("vtk_every"));
+  m.output.checkpoint_every_s = p.number("checkpoint_every_s");
   const std::string format = p.text("vtk_format");
   m.output.vtk_format = format == "ascii" ? VtkFormat::ascii : format == "binary" ? VtkFormat::binary : VtkFormat::compressed;
   if (out.has("vtk_fields")) {

@@ -206,6 +206,7 @@ struct OutputSettings {
   int vtk_every = 1;      ///< a frame every this many increments of a step (and at each step's end)
   VtkFormat vtk_format = VtkFormat::compressed;
   std::vector<std::string> vtk_fields;  ///< the arrays a frame holds, by vtk_field_names; empty: all
+  double checkpoint_every_s = 1.0;       ///< wall-clock seconds between restart checkpoints (0: every increment)
 };
 
 /// The arrays a .vtu frame of a model of geometry `g` can hold, by name without the unit

@@ -168,14 +168,16 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   newton_.append(newton_pending_);
   newton_pending_.clear();
   if (wants_frame(info)) write_frame(analysis, info);
-  // Every file the restart file records is on disk before it is written: it never claims more.
   RestartRecord r{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}};
-  for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_}) {
-    if (!f->is_open()) continue;
-    f->sync();
-    r.files.push_back(f->record());
-  }
-  write_file_atomically(dir_ + "/restart.txt", restart_text(r), Durability::synced);
+  for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
+    if (f->is_open()) r.files.push_back(f->record());
+  // A checkpoint at the reference state, at the end of each step, when a stop was asked for,
+  // and otherwise at most every output.checkpoint_every_s of wall-clock time; in between the
+  // record waits (finish() commits it if the run ends there).
+  const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint_).count();
+  pending_ = std::move(r);
+  if (info.step == 0 || info.fraction >= 1.0 - 1e-12 || stop_requested() || since >= model_.output.checkpoint_every_s)
+    commit_checkpoint();
   if (progress_) {
     if (info.step == 0)
       std::fprintf(progress_, "reference state written\n");
@@ -187,6 +189,25 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
 }
 
 bool RunWriter::stop_requested() { return stop_signal() != 0; }
+
+void RunWriter::commit_checkpoint() {
+  if (!pending_) return;
+  // Every file the restart file records is on disk before it is written: it never claims more.
+  for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
+    if (f->is_open()) f->sync();
+  write_file_atomically(dir_ + "/restart.txt", restart_text(*pending_), Durability::synced);
+  pending_.reset();
+  last_checkpoint_ = std::chrono::steady_clock::now();
+}
+
+void RunWriter::finish() { commit_checkpoint(); }
+
+RunWriter::~RunWriter() {
+  try {
+    commit_checkpoint();
+  } catch (...) {  // the run is ending on another error already; the last committed checkpoint stands
+  }
+}
 
 void RunWriter::write_newton_log() {
   newton_.append(newton_pending_);

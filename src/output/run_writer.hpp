@@ -5,12 +5,18 @@
 //   meridian.pvd / surface.pvd and vtk/*.vtu   ParaView series (output.vtk_every),
 //   frames.csv    one row per .vtu frame file: its byte length and CRC-32,
 // restart.txt (see restart_file.hpp) and the progress lines on the terminal.
-// The CSV files and the .pvd series are appended (append_file.hpp), each frame
-// is written atomically, all are synced, and then restart.txt is rewritten
-// atomically (synced) with the length and CRC-32 of each: a stopped or killed
-// run leaves files a restart can check and continue. The caller holds the
+// The CSV files and the .pvd series are appended (append_file.hpp) and each frame
+// is written atomically. At a checkpoint all are synced, and then restart.txt is
+// rewritten atomically (synced) with the length and CRC-32 of each: a stopped or
+// killed run leaves files a restart can check and continue. Checkpoints are taken
+// at the reference state, at the end of each step, when a stop is asked for, when
+// the run ends on an error (finish(), or the destructor), and otherwise at most
+// every output.checkpoint_every_s seconds, so that a run of many small increments
+// does not wait for the disk at each. The caller holds the
 // folder's lock (output_lock.hpp) for the writer's whole life.
+#include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "output/append_file.hpp"
@@ -27,6 +33,8 @@ public:
   /// `resume`, checks every file its restart file records (InputError naming a damaged file),
   /// cuts them back to the recorded lengths and continues them.
   RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume = nullptr);
+  /// Commits the last converged increment's checkpoint if it is still waiting.
+  ~RunWriter() override;
 
   void on_iteration(const IncrementInfo& info, const IterationRecord& rec) override;
   void on_cutback(const IncrementInfo& info, const std::string& why) override;
@@ -35,9 +43,14 @@ public:
   bool stop_requested() override;
   /// Appends the attempts since the last converged increment to newton.csv (for a run that stops).
   void write_newton_log();
+  /// Commits the checkpoint of the last converged increment if it is still waiting (a run
+  /// that stops on an error); the attempts written after it are not part of it.
+  void finish();
 
 private:
   void resume_from(const RestartRecord& r);
+  /// Syncs every file and writes restart.txt from pending_.
+  void commit_checkpoint();
   void write_frame(const Analysis& analysis, const IncrementInfo& info);
   bool wants_frame(const IncrementInfo& info) const;
 
@@ -49,6 +62,8 @@ private:
   int history_rows_ = 0, newton_rows_ = 0;
   long frames_ = 0;
   AppendFile history_, newton_, frames_csv_, meridian_pvd_, surface_pvd_;
+  std::optional<RestartRecord> pending_;  ///< the last converged increment's record, not yet committed
+  std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace tunica

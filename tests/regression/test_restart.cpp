@@ -165,3 +165,28 @@ TEST(Restart, AKilledShellRunRestartsToTheUninterruptedResults) {
   EXPECT_EQ(rows_without_timing(read_text((dir / "killed" / "newton.csv").string())),
             rows_without_timing(read_text((dir / "full" / "newton.csv").string())));
 }
+
+TEST(Restart, CheckpointsFollowTheIntervalAndAStopCommitsTheLastIncrement) {
+  // checkpoint_every_s: 1000 — within the run's first step only its reference state is checkpointed.
+  const fs::path dir = scratch("interval");
+  std::string text = read_text(long_deck(dir));
+  const std::string deck = (dir / "sparse.yaml").string();
+  std::ofstream(deck) << replace(text, "output:\n", "output:\n  checkpoint_every_s: 1000\n");
+  ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
+  // Killed: restart.txt still records the reference state (increment 0); the restart cuts the
+  // rows written after it and reproduces the uninterrupted run.
+  int status = start_and_signal(deck, dir / "killed", 40, SIGKILL);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  const std::string restart = read_text((dir / "killed" / "restart.txt").string());
+  EXPECT_NE(restart.find("\nincrement 0\n"), std::string::npos) << restart.substr(0, 300);
+  ASSERT_EQ(run("run " + deck + " -q --restart " + (dir / "killed").string()), 0);
+  EXPECT_EQ(read_text((dir / "killed" / "history.csv").string()), read_text((dir / "full" / "history.csv").string()));
+  // Stopped by SIGTERM: the increment it stopped after is committed, whatever the interval.
+  status = start_and_signal(deck, dir / "term", 40, SIGTERM);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  const std::string h = read_text((dir / "term" / "history.csv").string());
+  const long rows = std::count(h.begin(), h.end(), '\n') - 2;  // header and reference state
+  EXPECT_NE(read_text((dir / "term" / "restart.txt").string()).find("\nincrement " + std::to_string(rows) + "\n"),
+            std::string::npos);
+}
