@@ -12,6 +12,7 @@
 #include "fit/fit_command.hpp"
 #include "io/deck.hpp"
 #include "io/reference.hpp"
+#include "core/printable.hpp"
 #include "mesh/geo_mesher.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "output/atomic_file.hpp"
@@ -22,6 +23,21 @@
 #include "solver/analysis.hpp"
 
 namespace {
+
+/// A message for the terminal: each of its lines made printable (core/printable.hpp), so that
+/// no byte quoted from an input file (a control sequence in a physical group's name) reaches it raw.
+std::string for_terminal(const std::string& message) {
+  std::string out;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t end = message.find('\n', begin);
+    out += tunica::printable(std::string_view(message).substr(begin, end == std::string::npos ? end : end - begin), 4000);
+    if (end == std::string::npos) return out;
+    out += '\n';
+    begin = end + 1;
+  }
+}
+
 
 constexpr int kInputErrorExit = 2;
 constexpr int kSolveErrorExit = 3;
@@ -203,13 +219,13 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const tunica::InputError& e) {
-    std::fprintf(stderr, "tunica: input error: %s\n", e.what());
+    std::fprintf(stderr, "tunica: input error: %s\n", for_terminal(e.what()).c_str());
     return kInputErrorExit;
   } catch (const tunica::SolveError& e) {
-    std::fprintf(stderr, "tunica: the run stopped: %s\n", e.what());
+    std::fprintf(stderr, "tunica: the run stopped: %s\n", for_terminal(e.what()).c_str());
     return kSolveErrorExit;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "tunica: error: %s\n", e.what());
+    std::fprintf(stderr, "tunica: error: %s\n", for_terminal(e.what()).c_str());
     return kOtherErrorExit;
   }
   return 0;

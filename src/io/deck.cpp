@@ -542,11 +542,19 @@ void read_output(const DeckNode& deck, Model& m) {
       if (!item.is_scalar()) item.fail("expected an array name");
       const std::string name = item.as_string();
       if (std::find(names.begin(), names.end(), name) == names.end()) {
+        // A name with its unit suffix (sigma_hoop_N_per_mm2): the longest name it begins with.
+        std::string base;
+        for (const auto& n : names)
+          if (name.rfind(n + "_", 0) == 0 && n.size() > base.size()) base = n;
+        if (!base.empty())
+          item.fail(fmt::format("'{}': write the name without its unit suffix, '{}' (the frames add the unit)", name, base));
         std::string known;
         for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
         item.fail(fmt::format("'{}' is not an array of {} model's frames (names without the unit suffix): {}", name,
                               m.geometry == Geometry::axisymmetric ? "an axisymmetric" : "a 3-D", known));
       }
+      if (name == "contact_pressure" && m.contacts.empty())
+        item.fail("'contact_pressure' is written only for models with contact pairs, and this one has none");
       if (std::find(m.output.vtk_fields.begin(), m.output.vtk_fields.end(), name) != m.output.vtk_fields.end())
         item.fail("'" + name + "' is listed twice");
       m.output.vtk_fields.push_back(name);

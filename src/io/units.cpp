@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -42,11 +43,26 @@ UnitPtr parse_unit(const std::string& text) {
   return u;
 }
 
+/// Converts `value` from unit `from` to unit `to`. The converters of the pairs met are kept
+/// (at most kMaxCachedConverters), so that the units of the history columns, converted after
+/// every increment, are parsed once per run and not once per value.
 double convert(double value, const std::string& from, const std::string& to, const char* what) {
+  constexpr std::size_t kMaxCachedConverters = 256;
+  static std::mutex m;
+  static std::map<std::pair<std::string, std::string>, cv_converter*> cache;
+  const auto key = std::make_pair(from, to);
+  {
+    std::lock_guard<std::mutex> lock(m);
+    if (auto it = cache.find(key); it != cache.end()) return cv_convert_double(it->second, value);
+  }
   UnitPtr a = parse_unit(from), b = parse_unit(to);
   cv_converter* cv = ut_get_converter(a.get(), b.get());
   if (!cv) throw std::invalid_argument("unit '" + from + "' is not a " + what);
-  double r = cv_convert_double(cv, value);
+  const double r = cv_convert_double(cv, value);
+  {
+    std::lock_guard<std::mutex> lock(m);
+    if (cache.size() < kMaxCachedConverters && cache.emplace(key, cv).second) return r;
+  }
   cv_free(cv);
   return r;
 }

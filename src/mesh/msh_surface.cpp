@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <numeric>
@@ -143,16 +144,23 @@ std::string group_name(const MshFile& f, const Key& g) {
                                node_ref(p), node_ref(q), p.x(0), p.x(1), p.x(2)));
 }
 
-/// Two used nodes at one position (within tol = 1e-9 of the mesh size): a crack in the
-/// surface. Fast path: nodes sorted by their projection on a direction no mesh is aligned
+/// Two used nodes at one position: a crack in the surface. Candidates are the pairs within
+/// tol = 1e-9 of the size of the meshed region; a candidate is a coincidence when the two
+/// are also within 1e-6 of the shortest edge at either (`h`, per node), so that one node
+/// far away (which makes the region huge) cannot make neighbours "coincide". Fast path: nodes sorted by their projection on a direction no mesh is aligned
 /// with, comparing only nodes whose projections are within tol. A file whose nodes crowd
 /// one projection (all on one plane normal to it) would make that quadratic, so past
 /// 16 comparisons per node the check goes over to grids of cells of size H = 2 tol,
 /// shifted by 0 or H/2 along each axis (8 grids): two nodes within tol share a cell in
 /// at least one of them, and all nodes of one cell lie within 2√3 tol of each other, so a
 /// crowded cell is a coincidence too.
-void check_coincident(const MshFile& f, const std::vector<long>& used, const std::string& path) {
+void check_coincident(const MshFile& f, const std::vector<long>& used, const std::vector<double>& h,
+                      const std::string& path) {
   if (used.size() < 2) return;
+  const auto same_point = [&](long a, long b) {
+    const double dist = (f.nodes[a].x - f.nodes[b].x).norm();
+    return dist == 0 || dist <= 1e-6 * std::min(h[a], h[b]);
+  };
   Eigen::Vector3d lo = f.nodes[used[0]].x, hi = lo;
   for (long i : used) {
     lo = lo.cwiseMin(f.nodes[i].x);
@@ -173,7 +181,8 @@ void check_coincident(const MshFile& f, const std::vector<long>& used, const std
         crowded = true;
         break;
       }
-      if ((f.nodes[proj[a].second].x - f.nodes[proj[b].second].x).norm() <= tol)
+      if ((f.nodes[proj[a].second].x - f.nodes[proj[b].second].x).norm() <= tol &&
+          same_point(proj[a].second, proj[b].second))
         coincide(f, proj[a].second, proj[b].second, path);
     }
   if (!crowded) return;
@@ -188,7 +197,8 @@ void check_coincident(const MshFile& f, const std::vector<long>& used, const std
     }
     std::sort(cells.begin(), cells.end());
     for (std::size_t k = 1; k < cells.size(); ++k)
-      if (cells[k].first == cells[k - 1].first) coincide(f, cells[k - 1].second, cells[k].second, path);
+      if (cells[k].first == cells[k - 1].first && same_point(cells[k - 1].second, cells[k].second))
+        coincide(f, cells[k - 1].second, cells[k].second, path);
   }
 }
 
@@ -282,7 +292,23 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
   used.erase(std::unique(used.begin(), used.end()), used.end());
   if (static_cast<long>(used.size()) > kMaxMshNodes)
     fail(fmt::format("the physical surfaces have {} nodes (at most {} are allowed)", used.size(), kMaxMshNodes));
-  check_coincident(f, used, path);
+  // The shortest non-zero edge at each used node: the local length scale of the coincidence test.
+  std::vector<double> h(f.nodes.size(), std::numeric_limits<double>::infinity());
+  for (const auto& s : raw)
+    for (const auto* list : {&s.tri, &s.quad})
+      for (std::size_t e : *list) {
+        const auto& el = f.elements[e];
+        const int n = msh_element_type(el.type).nodes;
+        for (int k = 0; k < n; ++k) {
+          const long a = node_of(el, k), b = node_of(el, (k + 1) % n);
+          const double len = (f.nodes[a].x - f.nodes[b].x).norm();
+          if (len > 0) {
+            h[a] = std::min(h[a], len);
+            h[b] = std::min(h[b], len);
+          }
+        }
+      }
+  check_coincident(f, used, h, path);
   std::vector<int> compact(f.nodes.size(), -1);  // f.nodes index -> mesh node, -1 if unused
   SurfaceMesh mesh;
   mesh.nodes.reserve(used.size());

@@ -265,3 +265,15 @@ TEST(BadMeshes, AFoldedQuadrilateralIsNamedByTheMeshFileAndItsTags) {
             std::string::npos)
       << o.output;
 }
+
+TEST(BadMeshes, ControlCharactersFromAMeshNeverReachTheTerminal) {
+  // A physical curve named with an escape sequence: the deck's node set 'edge' is undefined, and
+  // the message listing the node sets there are shows the name escaped, on one printable line.
+  std::string mesh = msh(kGood, 2);
+  mesh = replace(mesh, "1 10 \"edge\"", "1 10 \"ed\x1b[31mge\"");
+  expect_error("control-name", mesh, "", "", "boundary.fixed.node_set", "undefined node set 'edge'");
+  const fs::path dir = scratch() / "control-name";
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.output.find('\x1b'), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("ed\\x1B[31mge"), std::string::npos) << o.output;
+}

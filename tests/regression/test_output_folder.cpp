@@ -340,6 +340,13 @@ TEST(OutputFolder, VtkFieldsSelectTheArraysOfEachFrame) {
   EXPECT_NE(bad.output.find("output.vtk_fields"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("'sigma_max' is not an array of an axisymmetric model's frames"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("sigma_meridional_inner"), std::string::npos) << bad.output;
+  const Outcome suffixed = run_cli("check " + deck(dir, "suffixed.yaml", "  vtk_fields: [sigma_hoop_N_per_mm2]\n"));
+  EXPECT_EQ(suffixed.exit_code, 2) << suffixed.output;
+  EXPECT_NE(suffixed.output.find("write the name without its unit suffix, 'sigma_hoop'"), std::string::npos)
+      << suffixed.output;
+  const Outcome contact = run_cli("check " + deck(dir, "contact.yaml", "  vtk_fields: [contact_pressure]\n"));
+  EXPECT_EQ(contact.exit_code, 2) << contact.output;
+  EXPECT_NE(contact.output.find("only for models with contact pairs"), std::string::npos) << contact.output;
   const Outcome twice = run_cli("check " + deck(dir, "twice.yaml", "  vtk_fields: [J, J]\n"));
   EXPECT_EQ(twice.exit_code, 2) << twice.output;
   EXPECT_NE(twice.output.find("'J' is listed twice"), std::string::npos) << twice.output;

@@ -440,3 +440,18 @@ TEST(MshReader, AnEntityInHundredsOfThousandsOfGroupsIsRefusedBeforeListing) {
   EXPECT_TRUE(contains(e.reason(), "physical groups in all, more than the 160000000 Tunica reads")) << e.what();
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
 }
+
+TEST(MshReader, OneFarAwayNodeDoesNotMakeItsNeighboursCoincide) {
+  // Node 6 at x = 1e9 makes the meshed region 1e9 wide; nodes 1 mm apart are not a crack.
+  const std::string text = square("5 2 0 0\n6 1e9 0.5 0\n", 6, "3 2 2 1 1 2 5 3\n4 2 2 1 1 5 6 3\n", 4);
+  try {
+    const SurfaceMesh m = from_text(text);
+    EXPECT_EQ(m.nodes.size(), 6u);
+  } catch (const InputError& e) {
+    EXPECT_FALSE(contains(e.reason(), "coincide")) << e.what();
+  }
+  // Two nodes at one point beside it still are.
+  const std::string crack = square("5 2 0 0\n6 1e9 0.5 0\n7 1 1 0\n", 7, "3 2 2 1 1 2 5 7\n4 2 2 1 1 5 6 7\n", 4);
+  const InputError e = input_error([&] { from_text(crack); });
+  EXPECT_TRUE(contains(e.reason(), "node 3 (line 12) and node 7 (line 16) coincide at (1, 1, 0)")) << e.what();
+}
