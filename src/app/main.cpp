@@ -84,6 +84,7 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
     analysis.run(writer, resume ? &resume->checkpoint : nullptr);
   } catch (const tunica::SolveError&) {
     writer.write_newton_log();  // keep the failed attempts for diagnosis
+    writer.finish(analysis);    // the last converged state: its frame and its checkpoint
     throw;
   } catch (const tunica::Interrupted& e) {
     const int sig = tunica::stop_signal();

@@ -167,15 +167,18 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   ++history_rows_;
   newton_.append(newton_pending_);
   newton_pending_.clear();
-  if (wants_frame(info)) write_frame(analysis, info);
-  RestartRecord r{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}};
+  // A run about to stop on request gets a frame of its last state too.
+  last_info_ = info;
+  last_framed_ = wants_frame(info) || (model_.output.vtk && stop_requested());
+  if (last_framed_) write_frame(analysis, info);
+  last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}};
   for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
-    if (f->is_open()) r.files.push_back(f->record());
+    if (f->is_open()) last_->files.push_back(f->record());
+  committed_ = false;
   // A checkpoint at the reference state, at the end of each step, when a stop was asked for,
   // and otherwise at most every output.checkpoint_every_s of wall-clock time; in between the
   // record waits (finish() commits it if the run ends there).
   const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint_).count();
-  pending_ = std::move(r);
   if (info.step == 0 || info.fraction >= 1.0 - 1e-12 || stop_requested() || since >= model_.output.checkpoint_every_s)
     commit_checkpoint();
   if (progress_) {
@@ -188,19 +191,33 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   }
 }
 
-bool RunWriter::stop_requested() { return stop_signal() != 0; }
 
 void RunWriter::commit_checkpoint() {
-  if (!pending_) return;
+  if (!last_ || committed_) return;
   // Every file the restart file records is on disk before it is written: it never claims more.
   for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
     if (f->is_open()) f->sync();
-  write_file_atomically(dir_ + "/restart.txt", restart_text(*pending_), Durability::synced);
-  pending_.reset();
+  write_file_atomically(dir_ + "/restart.txt", restart_text(*last_), Durability::synced);
+  committed_ = true;
   last_checkpoint_ = std::chrono::steady_clock::now();
 }
 
-void RunWriter::finish() { commit_checkpoint(); }
+void RunWriter::finish(const Analysis& analysis) {
+  if (last_ && !last_framed_ && model_.output.vtk) {
+    // The last converged state (the analysis is still at it) as a ParaView frame, recorded in
+    // its checkpoint; the appended history and Newton records stay those of the increment.
+    write_frame(analysis, last_info_);
+    last_framed_ = true;
+    last_->frames = frames_;
+    std::erase_if(last_->files, [](const FileRecord& f) {
+      return f.name == "frames.csv" || f.name == "meridian.pvd" || f.name == "surface.pvd";
+    });
+    for (AppendFile* f : {&frames_csv_, &meridian_pvd_, &surface_pvd_})
+      if (f->is_open()) last_->files.push_back(f->record());
+    committed_ = false;
+  }
+  commit_checkpoint();
+}
 
 RunWriter::~RunWriter() {
   try {
@@ -208,6 +225,8 @@ RunWriter::~RunWriter() {
   } catch (...) {  // the run is ending on another error already; the last committed checkpoint stands
   }
 }
+
+bool RunWriter::stop_requested() { return stop_signal() != 0; }
 
 void RunWriter::write_newton_log() {
   newton_.append(newton_pending_);

@@ -43,13 +43,14 @@ public:
   bool stop_requested() override;
   /// Appends the attempts since the last converged increment to newton.csv (for a run that stops).
   void write_newton_log();
-  /// Commits the checkpoint of the last converged increment if it is still waiting (a run
-  /// that stops on an error); the attempts written after it are not part of it.
-  void finish();
+  /// A run that stops on an error, with `analysis` still at its last converged increment:
+  /// writes that state's ParaView frame if output.vtk_every skipped it, and commits its
+  /// checkpoint if it is still waiting (the attempts written after it are not part of it).
+  void finish(const Analysis& analysis);
 
 private:
   void resume_from(const RestartRecord& r);
-  /// Syncs every file and writes restart.txt from pending_.
+  /// Syncs every file and writes restart.txt from last_, unless it is committed already.
   void commit_checkpoint();
   void write_frame(const Analysis& analysis, const IncrementInfo& info);
   bool wants_frame(const IncrementInfo& info) const;
@@ -62,7 +63,10 @@ private:
   int history_rows_ = 0, newton_rows_ = 0;
   long frames_ = 0;
   AppendFile history_, newton_, frames_csv_, meridian_pvd_, surface_pvd_;
-  std::optional<RestartRecord> pending_;  ///< the last converged increment's record, not yet committed
+  std::optional<RestartRecord> last_;  ///< the last converged increment's record
+  bool committed_ = false;             ///< last_ is in restart.txt
+  IncrementInfo last_info_;            ///< the last converged increment
+  bool last_framed_ = false;           ///< it has its ParaView frame
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
 };
 

@@ -190,3 +190,26 @@ TEST(Restart, CheckpointsFollowTheIntervalAndAStopCommitsTheLastIncrement) {
   EXPECT_NE(read_text((dir / "term" / "restart.txt").string()).find("\nincrement " + std::to_string(rows) + "\n"),
             std::string::npos);
 }
+
+TEST(Restart, ARunThatStopsOnAFailedIncrementHasAFrameOfItsLastConvergedState) {
+  // The balloon pressed past its pressure maximum (about 0.0124 MPa) under pressure control:
+  // the run stops with exit 3. With vtk_every: 100 no increment of the step would have a
+  // frame; the last converged state gets one, recorded in the checkpoint.
+  const fs::path dir = scratch("limit");
+  std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  text = replace(replace(replace(text, "increments: 20", "increments: 10"), "elements: 100}", "elements: 20}"),
+                 "inflation: 0.0118 MPa", "inflation: 0.015 MPa");
+  const std::string deck = (dir / "limit.yaml").string();
+  std::ofstream(deck) << replace(text, "output:\n", "output:\n  vtk_segments: 8\n  vtk_every: 100\n");
+  ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "out").string()), 3);
+  const std::string h = read_text((dir / "out" / "history.csv").string());
+  const std::string last_row = h.substr(h.rfind('\n', h.size() - 2) + 1);
+  const std::string last_time = last_row.substr(0, last_row.find(',', last_row.find(',') + 1) + 1);  // "step,increment,"
+  const std::string pvd = read_text((dir / "out" / "surface.pvd").string());
+  EXPECT_EQ(std::count(pvd.begin(), pvd.end(), '\n') - 5, 2) << pvd;  // the reference state and the last state
+  const std::string time = last_row.substr(last_time.size(), last_row.find(',', last_time.size()) - last_time.size());
+  EXPECT_NE(pvd.find("timestep=\"" + time + "\""), std::string::npos) << time << "\n" << pvd;
+  EXPECT_TRUE(fs::exists(dir / "out" / "vtk" / "surface_000001.vtu"));
+  // The folder is consistent: a restart accepts it (and stops at the same limit point).
+  EXPECT_EQ(run("run " + deck + " -q --restart " + (dir / "out").string()), 3);
+}
