@@ -48,8 +48,15 @@ UnitPtr parse_unit(const std::string& text) {
 /// every increment, are parsed once per run and not once per value.
 double convert(double value, const std::string& from, const std::string& to, const char* what) {
   constexpr std::size_t kMaxCachedConverters = 256;
+  struct Cache {
+    std::map<std::pair<std::string, std::string>, cv_converter*> converters;
+    ~Cache() {
+      for (auto& [key, cv] : converters) cv_free(cv);
+    }
+  };
   static std::mutex m;
-  static std::map<std::pair<std::string, std::string>, cv_converter*> cache;
+  static Cache cache_store;
+  auto& cache = cache_store.converters;
   const auto key = std::make_pair(from, to);
   {
     std::lock_guard<std::mutex> lock(m);
