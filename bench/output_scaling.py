@@ -5,8 +5,9 @@ increments, a ParaView frame every 10,000) and compares the wall time per
 increment near increment 1,000 with that near increment 100,000. Every
 increment appends to history.csv and newton.csv; every second of wall-clock
 time (output.checkpoint_every_s) the files are synced and restart.txt is
-rewritten. The time per increment must not grow with the length of the files
-(target: within 20 %). The CPU time (user + system) of the tunica process is
+rewritten. The time per increment must not grow with the length of the files:
+the script fails if the end window is more than 20 % slower than the early one
+(the early window, the first files' pages, is often the slower). The CPU time (user + system) of the tunica process is
 sampled at the same increments too; at this model's speed a window spans a few
 of the clock's ticks only.
 
@@ -72,7 +73,7 @@ sizes = {f: os.path.getsize(os.path.join(out, f)) for f in ("history.csv", "newt
 print(f"{increments} increments in {total:.1f} s")
 print(f"time per increment, increments {early - window // 2 + 1}-{early + window // 2}: {1e3 * near_early:.3f} ms")
 print(f"time per increment, increments {increments - window + 1}-{increments}: {1e3 * near_end:.3f} ms")
-print(f"ratio end / early: {near_end / near_early:.3f} (target within 0.8-1.2)")
+print(f"ratio end / early: {near_end / near_early:.3f} (target at most 1.2)")
 print(f"CPU time per increment, same windows: {1e3 * cpu_early:.3f} ms and {1e3 * cpu_end:.3f} ms, "
       f"ratio {cpu_end / cpu_early:.3f} (the clock ticks every {1e3 * tick_s:.0f} ms: "
       f"{1e3 * tick_s / window:.3f} ms per increment over a window)")
@@ -80,4 +81,4 @@ print("  of which user / system: " + " and ".join(
     f"{1e3 * per_increment(cpu, k, 0):.3f} / {1e3 * per_increment(cpu, k, 1):.3f} ms" for k in (early + window // 2, increments)))
 print("files at the end: " + ", ".join(f"{f} {s} bytes" for f, s in sizes.items()))
 shutil.rmtree(work)
-sys.exit(0 if 0.8 <= near_end / near_early <= 1.2 else 1)
+sys.exit(0 if near_end / near_early <= 1.2 else 1)
