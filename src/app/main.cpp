@@ -24,20 +24,9 @@
 
 namespace {
 
-/// A message for the terminal: each of its lines made printable (core/printable.hpp), so that
-/// no byte quoted from an input file (a control sequence in a physical group's name) reaches it raw.
-std::string for_terminal(const std::string& message) {
-  std::string out;
-  std::size_t begin = 0;
-  for (;;) {
-    const std::size_t end = message.find('\n', begin);
-    out += tunica::printable(std::string_view(message).substr(begin, end == std::string::npos ? end : end - begin), 4000);
-    if (end == std::string::npos) return out;
-    out += '\n';
-    begin = end + 1;
-  }
-}
-
+/// A message for the terminal (core/printable.hpp): no byte quoted from an input file (a
+/// control sequence in a physical group's name) reaches it raw.
+std::string for_terminal(const std::string& message) { return tunica::terminal_safe(message); }
 
 constexpr int kInputErrorExit = 2;
 constexpr int kSolveErrorExit = 3;
