@@ -191,7 +191,6 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   }
 }
 
-
 void RunWriter::commit_checkpoint() {
   if (!last_ || committed_) return;
   // Every file the restart file records is on disk before it is written: it never claims more.
