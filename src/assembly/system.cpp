@@ -17,7 +17,7 @@
 #include "loads/axisym_shell_pressure.hpp"
 #include "loads/axisym_pressure.hpp"
 #include "loads/surface_pressure.hpp"
-#include "mesh/surface_curvature.hpp"
+#include "model/surface_curvature.hpp"
 
 namespace tunica {
 

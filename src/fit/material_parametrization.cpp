@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "io/read_params.hpp"
+
 namespace tunica {
 
 namespace {

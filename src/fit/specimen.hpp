@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fit/thin_tube.hpp"
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 
 namespace tunica {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 #include "model/model.hpp"
 
 namespace tunica {

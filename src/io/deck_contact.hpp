@@ -4,7 +4,7 @@
 // part or an ordered node set) with a rigid surface or a deformable master
 // chain (a membrane part or an ordered node set), see model.hpp (ContactPair).
 #include "io/deck_node.hpp"
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 #include "model/model.hpp"
 
 namespace tunica {

@@ -5,11 +5,12 @@
 #include <cstddef>
 #include <string>
 
+#include "core/limits.hpp"
+
 namespace tunica {
 
 constexpr std::size_t kMaxDeckBytes = 16u << 20;  ///< 16 MiB of YAML is far beyond any real deck
 constexpr int kMaxDeckNesting = 64;                ///< nesting levels of maps and lists
-constexpr long kMaxNodes = 10'000'000;             ///< nodes in all parts together
 
 /// Throws InputError (file, line, column) if `text` is larger than kMaxDeckBytes or nests
 /// maps and lists (block indentation, "- " items, flow brackets) deeper than kMaxDeckNesting.

@@ -6,7 +6,7 @@
 // nodes (mesh/meridian_tangents.hpp) and checks every element at its reference
 // state (thickness within the radii of curvature, slopes along the element).
 #include "io/deck_node.hpp"
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 #include "model/model.hpp"
 
 namespace tunica {

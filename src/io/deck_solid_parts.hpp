@@ -4,7 +4,7 @@
 // profiles (mesh/solid_grid.hpp), with the node sets `<part>.inner`, `<part>.outer`
 // (increasing z), `<part>.bottom`, `<part>.top` (increasing r) and `<part>.all`.
 #include "io/deck_node.hpp"
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 #include "model/model.hpp"
 
 namespace tunica {

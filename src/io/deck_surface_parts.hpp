@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/deck_node.hpp"
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 #include "mesh/surface_mesh.hpp"
 #include "model/model.hpp"
 

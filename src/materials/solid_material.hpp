@@ -25,7 +25,8 @@
 #include <memory>
 #include <string>
 
-#include "io/params.hpp"
+#include "params/param_spec.hpp"
+#include "params/params.hpp"
 
 namespace tunica {
 

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "io/params.hpp"
+#include "params/param_spec.hpp"
+#include "params/params.hpp"
 
 namespace tunica {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "io/deck_limits.hpp"
+#include "core/limits.hpp"
 
 namespace tunica {
 

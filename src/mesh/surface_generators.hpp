@@ -5,7 +5,8 @@
 #include <map>
 #include <string>
 
-#include "io/params.hpp"
+#include "params/param_spec.hpp"
+#include "params/params.hpp"
 #include "mesh/surface_mesh.hpp"
 
 namespace tunica {

@@ -21,7 +21,7 @@
 
 #include "contact/rigid_surface.hpp"
 #include "core/errors.hpp"
-#include "io/units.hpp"
+#include "params/units.hpp"
 #include "loads/surface_pressure.hpp"
 #include "elements/axisym_solid.hpp"
 #include "materials/membrane_material.hpp"

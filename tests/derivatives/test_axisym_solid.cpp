@@ -17,6 +17,7 @@
 #include "../support/fd.hpp"
 #include "elements/axisym_solid.hpp"
 #include "io/deck_node.hpp"
+#include "io/read_params.hpp"
 #include "materials/solid_material.hpp"
 
 using namespace tunica;

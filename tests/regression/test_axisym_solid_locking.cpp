@@ -35,6 +35,7 @@
 
 #include "elements/axisym_solid.hpp"
 #include "io/deck_node.hpp"
+#include "io/read_params.hpp"
 #include "materials/solid_material.hpp"
 
 using namespace tunica;

@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "io/params.hpp"
+#include "io/read_params.hpp"
 #include "materials/membrane_material.hpp"
 
 namespace tunica::test {

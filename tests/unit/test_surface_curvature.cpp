@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "io/deck.hpp"
-#include "mesh/surface_curvature.hpp"
+#include "model/surface_curvature.hpp"
 
 using namespace tunica;
 

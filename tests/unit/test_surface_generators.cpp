@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "io/deck_limits.hpp"
 #include "mesh/mesh_checks.hpp"
+#include "io/read_params.hpp"
 #include "mesh/surface_generators.hpp"
 
 using namespace tunica;

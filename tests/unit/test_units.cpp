@@ -1,7 +1,7 @@
 // Units: conversion of deck values into the deck's unit system (UDUNITS-2).
 #include <gtest/gtest.h>
 
-#include "io/units.hpp"
+#include "params/units.hpp"
 
 using namespace tunica;
 

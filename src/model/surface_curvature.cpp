@@ -1,5 +1,5 @@
 // H_e = (Σ_shared |e| θ_e / 4) / A_e × P_e / P_shared (surface_curvature.hpp).
-#include "mesh/surface_curvature.hpp"
+#include "model/surface_curvature.hpp"
 
 #include <algorithm>
 #include <cmath>

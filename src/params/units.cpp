@@ -1,4 +1,4 @@
-#include "io/units.hpp"
+#include "params/units.hpp"
 
 #include <udunits2.h>
 

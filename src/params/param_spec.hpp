@@ -2,15 +2,14 @@
 // Declared parameters. Every component a deck can name (a material, an element,
 // a mesh generator, a load, ...) declares its parameters here: type, unit
 // dimension, default, allowed range and a one-line doc. The same declaration
-// validates the deck (unknown keys, missing keys, types, units, ranges) and
-// generates the deck reference in docs/ (`tunica reference`).
-#include <map>
+// validates the deck (unknown keys, missing keys, types, units, ranges; io/read_params.hpp)
+// and generates the deck reference in docs/ (`tunica reference`). Nothing here reads YAML:
+// the components that declare parameters do not depend on the deck reader.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "io/deck_node.hpp"
-#include "io/units.hpp"
+#include "params/units.hpp"
 
 namespace tunica {
 
@@ -54,44 +53,10 @@ ParamSpec at_least(ParamSpec p, double min);
 ParamSpec at_most(ParamSpec p, double max);
 ParamSpec one_of(ParamSpec p, std::vector<std::string> choices);
 
-/// Values read against a ComponentSpec, in internal units.
-class Params {
-public:
-  double number(const std::string& name) const;
-  long integer(const std::string& name) const;
-  const std::string& text(const std::string& name) const;
-  bool boolean(const std::string& name) const;
-  const std::vector<double>& numbers(const std::string& name) const;
-  bool has(const std::string& name) const { return values_.count(name) != 0; }
-  /// Where the value was given (the component's map if defaulted).
-  const SourceLocation& where(const std::string& name) const;
-  /// The component's own location.
-  const SourceLocation& where() const { return self_; }
-  [[noreturn]] void fail(const std::string& name, const std::string& what) const;
-
-private:
-  struct Value {
-    std::vector<double> nums;
-    std::string str;
-    SourceLocation loc;
-  };
-  const Value& get(const std::string& name) const;
-  std::map<std::string, Value> values_;
-  SourceLocation self_;
-  friend Params read_params(const DeckNode&, const ComponentSpec&, const UnitSystem&,
-                            const std::vector<std::string>&);
-};
-
-/// Reads the map `node` against `spec`: errors on unknown keys (other than
-/// `extra_keys`), missing required keys, wrong types, unknown or wrong units and
-/// out-of-range values; fills defaults.
-Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSystem& units,
-                   const std::vector<std::string>& extra_keys = {});
-
-/// A number with an optional unit ("0.122 mm", 200 with the deck's units) in internal units.
-double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& units);
-
 /// Markdown table documenting a component's parameters.
 std::string params_markdown(const ComponentSpec& spec);
+
+/// The allowed range as the reference and the messages write it ("> 0", ">= 1, <= 2"; "" if none).
+std::string range_text(const ParamSpec& spec);
 
 }  // namespace tunica

@@ -1,0 +1,99 @@
+#include "io/read_params.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace tunica {
+
+double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& units) {
+  const std::string s = node.as_string();
+  double value = 0;
+  std::string unit;
+  if (!split_quantity(s, value, unit)) {
+    node.fail(dim == Dimension::dimensionless
+                  ? "expected a number, got '" + s + "'"
+                  : "expected a number with an optional unit (a " + std::string(dimension_name(dim)) +
+                        ", e.g. '" + (dim == Dimension::length     ? "0.122 mm"
+                                      : dim == Dimension::pressure ? "61.163 kPa"
+                                      : dim == Dimension::force    ? "0.1 N"
+                                      : dim == Dimension::penalty  ? "1e4 N/mm^3"
+                                      : dim == Dimension::moment   ? "0.5 N*mm"
+                                                                   : "90 deg") +
+                        "'), got '" + s + "'");
+  }
+  try {
+    const double v = units.to_internal(value, unit, dim);
+    if (!std::isfinite(v)) node.fail("value '" + s + "' is not finite");
+    return v;
+  } catch (const std::invalid_argument& e) {
+    node.fail(std::string(e.what()) + " (in '" + s + "'; expected a " + dimension_name(dim) + ")");
+  }
+}
+
+Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSystem& units,
+                   const std::vector<std::string>& extra_keys) {
+  std::vector<std::string> allowed = extra_keys;
+  for (const auto& p : spec.params) allowed.push_back(p.name);
+  node.expect_map_with_keys(allowed);
+  Params out;
+  out.set_where(node.where());
+  for (const auto& p : spec.params) {
+    if (p.type == ParamType::structured) {
+      if (p.required) node.required(p.name);
+      continue;  // read by the section itself
+    }
+    const DeckNode given = node[p.name];
+    // A key written without a value is an error, required or not: the sections test for a key's
+    // presence (node.has) and would otherwise find it present but unread.
+    if (given.yaml().IsDefined() && given.yaml().IsNull()) given.fail("key '" + p.name + "' has no value");
+    const bool missing = !given.yaml().IsDefined();
+    if (missing) {
+      if (p.required) {
+        SourceLocation w = node.where();
+        w.key = given.path();
+        throw InputError(w, "missing required key '" + p.name + "' (" + p.doc + ")");
+      }
+      if (p.default_text.empty()) continue;
+    }
+    // yaml-cpp nodes have reference semantics (assigning to a missing one throws): build anew.
+    const DeckNode v = missing ? DeckNode(YAML::Load(p.default_text), node.file(), given.path(), node.where()) : given;
+    Params::Value val;
+    val.loc = v.where();
+    switch (p.type) {
+      case ParamType::number: val.nums = {read_quantity(v, p.dim, units)}; break;
+      case ParamType::integer: val.nums = {static_cast<double>(v.as_integer())}; break;
+      case ParamType::boolean: val.nums = {v.as_bool() ? 1.0 : 0.0}; break;
+      case ParamType::text:
+        val.str = v.as_string();
+        if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), val.str) == p.choices.end()) {
+          std::string list;
+          for (const auto& c : p.choices) list += (list.empty() ? "" : ", ") + c;
+          v.fail("'" + val.str + "' is not one of: " + list);
+        }
+        break;
+      case ParamType::structured: break;
+      case ParamType::numbers: {
+        if (!v.is_sequence()) v.fail("expected a list of " + std::string(dimension_name(p.dim)) + " values");
+        for (const auto& item : v.items()) val.nums.push_back(read_quantity(item, p.dim, units));
+        if (p.count > 0 && static_cast<int>(val.nums.size()) != p.count)
+          v.fail(fmt::format("expected {} values, got {}", p.count, val.nums.size()));
+        break;
+      }
+    }
+    if (p.type == ParamType::number || p.type == ParamType::integer || p.type == ParamType::numbers) {
+      for (double x : val.nums) {
+        const bool below = p.min && (p.min_exclusive ? x <= *p.min : x < *p.min);
+        const bool above = p.max && x > *p.max;
+        if (below || above)
+          v.fail(fmt::format("value {:g} is out of range (must be {})", x, range_text(p)));
+      }
+    }
+    out.set(p.name, std::move(val));
+  }
+  return out;
+}
+
+}  // namespace tunica
