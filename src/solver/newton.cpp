@@ -185,9 +185,10 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     rec.iteration = k;
     double scale = 0;
     const auto t0 = std::chrono::steady_clock::now();
-    // Backtracking line search: a correction that raises ‖R‖, makes it non-finite or leaves the
-    // admissible states (an inverted element) is halved, up to kMaxBacktracks times. The full
-    // Newton step is always tried first, so quadratic convergence is untouched near a solution.
+    // Backtracking line search (theory manual (7.4)): a correction that raises ‖R‖, makes it
+    // non-finite or leaves the admissible states (an inverted element) is halved, up to
+    // kMaxBacktracks times. The full Newton step is always tried first, so quadratic convergence
+    // is untouched near a solution.
     std::string inadmissible;
     for (;;) {
       inadmissible.clear();

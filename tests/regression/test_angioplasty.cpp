@@ -1,4 +1,4 @@
-// The balloon-angioplasty example (examples/balloon-angioplasty.yaml, THEORY §6, a draft of
+// The balloon-angioplasty example (examples/balloon-angioplasty.yaml, theory manual §12.2, a draft of
 // the paper's §4.2): a prestretched Fung artery, a neo-Hookean solid plaque entering stress
 // free, a Mooney–Rivlin balloon entering and inflated to 2.05 N/mm², penalty contact
 // plaque–artery and balloon–plaque. Checks what the paper's example shows qualitatively:

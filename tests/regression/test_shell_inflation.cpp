@@ -1,5 +1,5 @@
 // Axisymmetric shells (element axisymmetric_shell) against the membrane and the closed
-// forms where bending is negligible (THEORY §7):
+// forms where bending is negligible (theory manual §8, §11):
 //  - the thin neo-Hookean sphere of examples/balloon-sphere.yaml (H/R = 0.01) as a shell,
 //    equator held by symmetry (z, slope_r), pole on the axis (r, slope_z): the pressure
 //    matches p = 2μ(H/R)(λ⁻¹ − λ⁻⁷) to O((H/R)²) = 1e-4 at every increment (the

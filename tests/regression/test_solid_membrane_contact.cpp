@@ -1,5 +1,5 @@
 // Contact between a solid part's boundary and a membrane, with the solid entering in step 2
-// (THEORY §6: the plaque placed in the prestretched, pressurized artery). The slave is the
+// (theory manual §12.2: the plaque placed in the prestretched, pressurized artery). The slave is the
 // plaque's outer surface (the ordered node set plaque.outer of the solid grid), the master the
 // artery's meridian (reversed: the slave is inside). Step 1 inflates the artery while the
 // plaque is held: the pair is inactive. Step 2 opens the plaque's lumen radially until its
