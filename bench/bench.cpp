@@ -86,7 +86,7 @@ std::string sphere_deck(const Options& o) {
 /// factorization of the run, the same matrix is factorized again by a separate solver of the
 /// same kind (its symbolic analysis done on its first call, untimed) and that numeric
 /// factorization is timed: the floor measured at the same moment as the iteration, free of the
-/// drift of this shared machine's speed between a run and a floor timed after it. Everything the
+/// drift of a shared machine's speed between a run and a floor timed after it. Everything the
 /// pairing adds is subtracted from the iteration's factorization time.
 struct PairedLog {
   double added = 0;  ///< seconds the pairing added since the last iteration record
@@ -206,7 +206,7 @@ int run(const Options& o) {
     const double t0 = now();
     bare->factorize(K);
     b.first = now() - t0;
-    const int repeats = b.first < 5.0 ? 5 : 2;  // the best of several: this machine's timings vary by ±20 %
+    const int repeats = b.first < 5.0 ? 5 : 2;  // the best of several: timings on a shared machine vary by ±20 %
     for (int k = 0; k < repeats; ++k) {
       const double t1 = now();
       bare->factorize(K);

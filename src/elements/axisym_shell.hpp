@@ -1,6 +1,6 @@
 #pragma once
-// Two-node axisymmetric Kirchhoff–Love shell element (theory manual §11; the paper
-// cross-checks its membranes against an axisymmetric Kirchhoff-type shell, §12.2).
+// Two-node axisymmetric Kirchhoff–Love shell element (theory manual §11; issue #4 item 6:
+// the paper cross-checks its membranes against an axisymmetric Kirchhoff-type shell, §12.2).
 // Finite strain, finite rotation, thin shell of revolution; the meridian lies in
 // the (r, z) plane.
 //

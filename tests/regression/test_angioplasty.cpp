@@ -91,7 +91,7 @@ PenaltyRun run_with_penalty(const std::string& factor_text) {
 
 }  // namespace
 
-// The penalty study as a regression: ten times both penalties (2e3 → 2e4 N/mm³)
+// The penalty study as a regression: ten times both penalties (2e3 → 2e4 N/mm³)
 // changes the maximum balloon–plaque contact pressure at 2.05 N/mm² by under 2 %, and the
 // penetration falls about tenfold (docs/examples/balloon-angioplasty.md, "Penalty study").
 TEST(Angioplasty, TenfoldPenaltyChangesThePeakContactPressureByUnderTwoPercent) {

@@ -8,7 +8,7 @@
 //    held in slope_r: hoop equilibrium of the Kirchhoff–Love wall under pressure on its
 //    mid-surface, ∫ σ_θ r/(r + η) dη = p r (≈ N_θ − M_θ/r), to round-off at every Gauss
 //    point, and the hoop stretch within 1.5 % of the membrane's thin-tube closed form
-//    although H/R = 0.16 (0.9 % found);
+//    although H/R = 0.16 (the shell differs by about 0.9 %);
 //  - the shell artery and balloon of tests/support/shell_decks.hpp run through contact.
 #include <gtest/gtest.h>
 

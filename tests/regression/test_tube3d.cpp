@@ -107,7 +107,7 @@ std::string with_mesh(int around, const std::string& shape, int along) {
 TEST(Tube3d, FungTubeMatchesTheClosedFormInEveryInflationIncrement) {
   // Quads only: a union-jack triangulated tube with free end rings has near-mechanisms at
   // zero stress, too soft for the first Newton step of the prestretch from the stress-free
-  // state (an open question, see the session notes); triangles are checked on the sphere,
+  // state (not resolved here); triangles are checked on the sphere,
   // the clamped tube (RotationInvariance) and the patch tests.
   for (const auto& [shape, along, tol] : {std::tuple{"quad", 2, 1e-9}}) {
     const Errors e = run(with_mesh(8, shape, along), 8, tol);

@@ -1,6 +1,7 @@
 // The structured (r, z) grid of axisymmetric solid parts (mesh/solid_grid.hpp): node numbering,
 // counter-clockwise elements, the ordered surface chains, the profiles (constant, polyline,
-// cosine and circular bumps) and the geometric checks; the stenosis of the paper's angioplasty example (theory manual §12.2) is buildable.
+// cosine and circular bumps) and the geometric checks; the stenosis of the paper's angioplasty
+// example (theory manual §12.2) is buildable.
 #include <gtest/gtest.h>
 
 #include <cmath>
