@@ -7,13 +7,13 @@
 //   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE] [--paired]
 //           [--residual-tolerance R] [--energy-tolerance E]   (Newton tests; deck defaults 1e-9, 1e-12)
 //
-// tube:   a closed circular Fung tube (the rat aorta of THEORY §5: R = 0.763 mm,
+// tube:   a closed circular Fung tube (the rat aorta of theory manual §12.1: R = 0.763 mm,
 //         H = 0.122 mm), length 2πR, ends free to slide radially (held on the planes
 //         x = 0 and y = 0 against rigid motion), circumferential/axial frame,
 //         staggered triangles (around = along), stretched axially to λz = 1.3 with
 //         40 mmHg in 4 increments (an in-vivo-like prestretch keeps the wall in tension), then
 //         inflated to 120 mmHg in 6 increments.
-// sphere: the thin neo-Hookean sphere octant of THEORY §7 (R = 1 mm, H = 0.01 mm,
+// sphere: the thin neo-Hookean sphere octant of theory manual (8.3) (R = 1 mm, H = 0.01 mm,
 //         μ = 1 MPa), n × n quads per patch, pressure to the closed-form value at λ = 1.2.
 //
 // Per run it prints the mean time per Newton iteration split into assembly,
@@ -86,7 +86,7 @@ std::string sphere_deck(const Options& o) {
 /// factorization of the run, the same matrix is factorized again by a separate solver of the
 /// same kind (its symbolic analysis done on its first call, untimed) and that numeric
 /// factorization is timed: the floor measured at the same moment as the iteration, free of the
-/// drift of this shared machine's speed between a run and a floor timed after it. Everything the
+/// drift of a shared machine's speed between a run and a floor timed after it. Everything the
 /// pairing adds is subtracted from the iteration's factorization time.
 struct PairedLog {
   double added = 0;  ///< seconds the pairing added since the last iteration record
@@ -206,7 +206,7 @@ int run(const Options& o) {
     const double t0 = now();
     bare->factorize(K);
     b.first = now() - t0;
-    const int repeats = b.first < 5.0 ? 5 : 2;  // the best of several: this machine's timings vary by ±20 %
+    const int repeats = b.first < 5.0 ? 5 : 2;  // the best of several: timings on a shared machine vary by ±20 %
     for (int k = 0; k < repeats; ++k) {
       const double t1 = now();
       bare->factorize(K);
@@ -251,7 +251,7 @@ int run(const Options& o) {
     const double p_closed = 2.0 * 0.01 * (1.0 / l - std::pow(l, -7));
     accuracy = fmt::format("{:+.3e}", tunica::test::sphere_octant_pressure() / p_closed - 1.0);
   } else {
-    // Mean nodal radius against the thin-tube closed form (THEORY §5) at 120 mmHg and λz = 1.3:
+    // Mean nodal radius against the thin-tube closed form (theory manual (8.1)) at 120 mmHg and λz = 1.3:
     // the error of the hoop stretch λθ = r/R reached.
     double r = 0;
     for (int n = 0; n < model.num_nodes(); ++n)

@@ -1,6 +1,6 @@
 // Times reading a .msh file through the Gmsh SDK (gmsh::open, then the nodes and the
-// 2-D elements), the way Tunica read meshes before its own reader: the reference of
-// bench/mesh-read.sh. Built and run by that script only.
+// 2-D elements), the SDK's own reading path: the reference against which bench/mesh-read.sh
+// times Tunica's reader. Built and run by that script only.
 #include <gmsh.h>
 
 #include <chrono>

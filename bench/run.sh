@@ -7,7 +7,7 @@
 # each solver on the mid sizes, appends every run to results/bench/bench.csv, then
 # draws docs/figures/performance-scaling.png and prints the Markdown tables.
 # The 100k and 1M tubes also run with --paired (a bare factorization timed next to each of the
-# run's: the ratio free of this machine's speed drift). --quick skips the 1M-triangle tube
+# run's: the ratio free of the machine's speed drift). --quick skips the 1M-triangle tube
 # (about 40 minutes of the whole: 15 plain, 25 paired).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""CalculiX peer run: thin neo-Hookean sphere inflated to lambda = 1.2 (THEORY.md section 7).
+"""CalculiX peer run: thin neo-Hookean sphere inflated to lambda = 1.2 (theory manual (8.3)).
 
 Octant x, y, z >= 0 of a sphere (R = 1, H = 0.01) with symmetry BCs on the three
 coordinate planes, meshed exactly like Tunica's `octant` generator

@@ -20,7 +20,7 @@ P=$(python3 -c 'l=1.2; print(repr(2*1.0*0.01*(1/l-l**-7)))')   # MPa = N/mm^2
 
 cat > "$DECK" <<EOF
 # Thin neo-Hookean sphere octant inflated by a follower pressure to lambda = 1.2
-# (THEORY §7): p = 2 mu (H/R)(1/lambda - 1/lambda^7) = $P MPa.
+# (theory manual (8.3)): p = 2 mu (H/R)(1/lambda - 1/lambda^7) = $P MPa.
 title: neo-Hookean sphere octant n=$N to lambda 1.2 (pressure control, $INCS increments)
 units: {length: mm, force: N}
 materials:

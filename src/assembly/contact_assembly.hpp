@@ -1,6 +1,6 @@
 #pragma once
 // Contact contributions to the residual and tangent of a System (axisymmetric
-// models; theory manual §9): each contact pair, node by node, serially in pair
+// models; theory manual §9, (9.2)–(9.5)): each contact pair, node by node, serially in pair
 // and slave-node order after the elements, so the sums are deterministic.
 //
 // Rigid pair: the slave node's force f (2) and 2×2 tangent (rigid_surface.hpp),

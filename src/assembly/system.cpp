@@ -226,7 +226,7 @@ void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>&
   for (int e = 0; e < block.size(); ++e) {
     const int* en = block.element(e);
     for (int w = 0;; ++w) {
-      if (w == words) {  // more than 64·words colours (never seen for membranes): widen the masks
+      if (w == words) {  // more than 64·words colours (far more than a surface mesh needs): widen the masks
         std::vector<std::uint64_t> wider(static_cast<std::size_t>(num_nodes) * (words + 1), 0);
         for (int n = 0; n < num_nodes; ++n)
           for (int k = 0; k < words; ++k) wider[static_cast<std::size_t>(n) * (words + 1) + k] = used[static_cast<std::size_t>(n) * words + k];

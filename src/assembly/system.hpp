@@ -67,11 +67,12 @@ public:
   void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
                 double* force_scale = nullptr, int* active_contacts = nullptr,
                 std::vector<char>* active_set = nullptr) const;
-  /// The first Newton correction from a stress-free state (theory manual §7.2, solver/newton.hpp):
+  /// The first Newton correction from a stress-free state (theory manual §7.2, (7.6)–(7.8);
+  /// solver/newton.hpp):
   /// adds to K (free DOFs) the normal-tension stiffness K₀ (elements/start_tension.hpp) of every
   /// 3-D membrane element of an active part under pressure p, with the tension
   ///     T₀ = |p| / max(|H_e|, 1/L)
-  /// (twice Laplace's p/2H; H_e the element's mean curvature, mesh/surface_curvature.hpp; L the
+  /// (twice Laplace's p/2H; H_e the element's mean curvature, model/surface_curvature.hpp; L the
   /// diagonal of the part's bounding box, which caps T₀ on flat regions), and returns K₀ d
   /// (all DOFs; d over all DOFs, or empty for none).
   Eigen::VectorXd add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, SparseMatrix& K) const;
@@ -80,8 +81,9 @@ public:
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
   /// External force per unit pressure of load `l` at u (all DOFs): ∂f_ext/∂p.
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& u, int l) const;
-  /// Enclosed volume of the surface of load `l` at u (see surface_pressure.hpp; axisymmetric:
-  /// V = π ∫ r² dz along the meridian) and, if `grad` is given, ∂V/∂u (all DOFs).
+  /// Enclosed volume of the surface of load `l` at u (theory manual (6.6); axisymmetric:
+  /// V = π ∫ r² dz along the meridian, (6.7), on a shell's Hermite curve (11.5)) and, if
+  /// `grad` is given, ∂V/∂u (all DOFs).
   double volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad = nullptr) const;
   /// A zero matrix with the tangent's pattern.
   const SparseMatrix& pattern() const { return pattern_; }

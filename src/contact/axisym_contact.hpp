@@ -1,8 +1,9 @@
 #pragma once
 // Frictionless penalty contact of a slave node against deformable master
-// surfaces in the axisymmetric (r, z) meridian plane (THEORY §6: balloon,
-// plaque and artery). A kernel: positions in, energy, force and tangent out;
-// the search is contact/contact_search.hpp, rigid tools contact/rigid_surface.hpp.
+// surfaces in the axisymmetric (r, z) meridian plane (theory manual §9.1, (9.5);
+// balloon, plaque and artery of the paper's angioplasty example, §12.2). A kernel:
+// positions in, energy, force and tangent out; the search is
+// contact/contact_search.hpp, rigid tools contact/rigid_surface.hpp.
 //
 // Units: any consistent set (the decks use mm and N). Lengths [mm]; the penalty
 // ε is a pressure per unit penetration [N/mm³]; the slave's tributary area A_s

@@ -1,6 +1,6 @@
 #pragma once
-// Closest-point search of slave nodes on a master chain (THEORY §6: balloon,
-// plaque and artery surfaces in the (r, z) meridian plane). Geometry only: no
+// Closest-point search of slave nodes on a master chain (theory manual §9, §9.1:
+// balloon, plaque and artery surfaces in the (r, z) meridian plane). Geometry only: no
 // energy, no penalty; axisym_contact.hpp evaluates the contact at the result.
 //
 // Master chain: an ordered, open polyline of m ≥ 2 nodes P_0 … P_{m−1} (current

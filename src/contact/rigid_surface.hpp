@@ -1,6 +1,6 @@
 #pragma once
-// Slave node against a rigid tool in the (r, z) meridian plane (THEORY §6: the
-// catheter that holds the balloon). Same penalty law and conventions as
+// Slave node against a rigid tool in the (r, z) meridian plane (theory manual §9,
+// (9.1)–(9.4); the catheter that holds the balloon, §12.2). Same penalty law and conventions as
 // axisym_contact.hpp: Π = ½ ε ⟨−g_N⟩² A_s, f = ∂Π/∂x_s (2), K = ∂f/∂x_s (2×2),
 // exact for a fixed active set and a fixed feature; the tool has no DOFs.
 //

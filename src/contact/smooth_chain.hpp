@@ -1,7 +1,7 @@
 #pragma once
 // A C¹-smooth master surface for deformable contact in the (r, z) meridian
 // plane: the Catmull–Rom cubic through the master chain's nodes, and the
-// penalty contact of a slave node against it (theory manual §9.3).
+// penalty contact of a slave node against it (theory manual §9.3, (9.7)–(9.8)).
 //
 // Why. On a faceted master (node to segment, axisym_contact.hpp) the normal
 // jumps at every master node. A flexible slave (a membrane balloon, ≈3 nodes per

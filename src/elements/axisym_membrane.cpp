@@ -15,7 +15,8 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
   const double l2 = dx.squaredNorm();
   if (!(l2 > 0)) throw std::domain_error("axisymmetric membrane: element collapsed to a point");
 
-  // Meridional strain: E_s = ½(ℓ²/L² − 1), ∂E_s/∂u = (−Δx, Δx)/L², ∂²E_s/∂u² = [[I, −I], [−I, I]]/L².
+  // Meridional strain (theory manual (5.2)): E_s = ½(ℓ²/L² − 1), ∂E_s/∂u = (−Δx, Δx)/L²,
+  // ∂²E_s/∂u² = [[I, −I], [−I, I]]/L².
   const double Es = 0.5 * (l2 / L2 - 1.0);
   Eigen::Vector4d Bs;
   Bs << -dx, dx;
@@ -30,7 +31,7 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
     const double R = N0 * X(0, 0) + N1 * X(0, 1);
     const double r = N0 * x(0, 0) + N1 * x(0, 1);
     if (!(r > 0)) throw std::domain_error("axisymmetric membrane: radius not positive at a Gauss point");
-    // Hoop strain: E_θ = ½(r²/R² − 1), ∂E_θ/∂u = r N_r / R², ∂²E_θ/∂u² = N_r N_rᵀ / R².
+    // Hoop strain (theory manual (5.3)): E_θ = ½(r²/R² − 1), ∂E_θ/∂u = r N_r / R², ∂²E_θ/∂u² = N_r N_rᵀ / R².
     const double Et = 0.5 * (r * r / (R * R) - 1.0);
     const Eigen::Vector4d Nr(N0, 0.0, N1, 0.0);
     const Eigen::Vector4d Bt = (r / (R * R)) * Nr;

@@ -1,5 +1,5 @@
 #pragma once
-// Two-node axisymmetric membrane element (THEORY §4, the paper's element).
+// Two-node axisymmetric membrane element (theory manual §5, (5.1)–(5.4); the paper's element).
 // Nodes carry (r, z); DOFs per element are (u_r1, u_z1, u_r2, u_z2).
 // Direction 1 is the hoop direction, direction 2 the meridian. At each of the
 // two Gauss points: λ_s = ℓ/L, λ_θ = r/R,

@@ -50,10 +50,10 @@ LocalB local_map(double xi, double L) {
 
 /// y = B u, evaluated relative to node 1's position: the derivative rows of B annihilate a
 /// common shift of both nodes' positions (Σ of h′, h″ over the position functions is 0), and
-/// row 0 (r) gets it back through Σ h = 1. Same values, but x_ξ and x_ξξ no longer come from
-/// differences of absolute coordinates: on elements much shorter than their distance from
-/// the axis (the angioplasty balloon: 0.011 mm at r ≈ 0.4 mm) x_ξξ ~ L²/ρ lost up to r ρ/L²
-/// ≈ 1e4 × ε to cancellation, which showed as a Newton residual floor.
+/// row 0 (r) gets it back through Σ h = 1. Same values, but x_ξ and x_ξξ do not come from
+/// differences of absolute coordinates, which on elements much shorter than their distance
+/// from the axis (e.g. 0.011 mm at r ≈ 0.4 mm) would lose up to r ρ/L² × ε of x_ξξ ~ L²/ρ
+/// to cancellation (≈ 1e4 ε there) and put a floor under the Newton residual.
 Local local_values(const LocalB& B, const ShellVector& u) {
   ShellVector v = u;
   for (int a = 0; a < 2; ++a) {

@@ -1,8 +1,8 @@
 #pragma once
-// Two-node axisymmetric Kirchhoff–Love shell element (issue #4 item 6; THEORY §6:
-// the paper cross-checks its membranes against an axisymmetric Kirchhoff-type
-// shell). Finite strain, finite rotation, thin shell of revolution; the meridian
-// lies in the (r, z) plane.
+// Two-node axisymmetric Kirchhoff–Love shell element (theory manual §11; issue #4 item 6:
+// the paper cross-checks its membranes against an axisymmetric Kirchhoff-type shell, §12.2).
+// Finite strain, finite rotation, thin shell of revolution; the meridian lies in
+// the (r, z) plane.
 //
 // Discretization. Each node carries its position and its slope, the derivative
 // of the position with respect to the reference arc length S of the meridian:
@@ -55,9 +55,9 @@
 // times too stiff at finite membrane strain.) Each layer is a
 // membrane point: C = (C₁₁, C₂₂, C₁₂) = (λ_θ(ζ)², λ_s(ζ)², 0) (1 = hoop,
 // 2 = meridian, as in the membrane element) through membrane_response()
-// (incompressible plane stress, THEORY §2).
+// (incompressible plane stress, theory manual §2.1).
 //
-// Energy (exact reference volume element of the layered body):
+// Energy (exact reference volume element of the layered body; theory manual (11.3)):
 //     Π_e = Σ_g Σ_k w_g w_k (H/2) 2π R_ζ A_ζ Ŵ(C(ξ_g, ζ_k)),
 //     R_ζ = R + ζ N_r,  A_ζ = A (1 + ζ K_s),
 // Gauss–Legendre along ξ and through ζ. f = ∂Π_e/∂x and K = ∂²Π_e/∂x² are its

@@ -1,4 +1,5 @@
-// Four-node axisymmetric solid, displacement (Q1) and mean-dilatation (Q1/P0) forms.
+// Four-node axisymmetric solid, displacement (Q1) and mean-dilatation (Q1/P0) forms
+// (theory manual §10, (10.1)–(10.5)).
 //
 // Kinematics at a Gauss point (ξ, η), shape functions N_a, nodes X_a = (R_a, Z_a):
 //   ∂X/∂ξ = Σ_a X_a ⊗ ∂N_a/∂ξ,   G_a = ∂N_a/∂X = (∂X/∂ξ)^(−T) ∂N_a/∂ξ,

@@ -1,5 +1,6 @@
 #pragma once
-// Four-node axisymmetric finite-strain solid element (THEORY §6: the plaque).
+// Four-node axisymmetric finite-strain solid element (theory manual §10, (10.1)–(10.5);
+// the plaque of the paper's angioplasty example, §12.2).
 //
 // Bilinear quadrilateral in the (r, z) meridian plane, total Lagrangian, 2×2 Gauss
 // quadrature, reference volume element dV = 2πR dA. Nodes are numbered counter-

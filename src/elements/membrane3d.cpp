@@ -1,5 +1,5 @@
-// Total-Lagrangian 3-D membrane elements (membrane3d.hpp; THEORY §2 for the
-// material response). Equations, per Gauss point q with Gauss weight w_q:
+// Total-Lagrangian 3-D membrane elements (membrane3d.hpp; theory manual §5.1, (5.5)–(5.6);
+// §2 for the material response). Equations, per Gauss point q with Gauss weight w_q:
 //   reference:  G_α = Σ_a X_a ∂N_a/∂ξ^α,  n = G1 × G2 / |G1 × G2|,
 //               dA₀ = |G1 × G2| dξ dη,
 //               e1 = t/|t|, t = d − (d·n) n, d = DirectionRule(X_q, n);  e2 = n × e1,

@@ -1,7 +1,8 @@
 #pragma once
 // Total-Lagrangian 3-D membrane elements: 3-node triangles and 4-node
 // quadrilaterals on curved surfaces, any incompressible material through the
-// general C-based path of membrane_response() (THEORY §2), not principal axes.
+// general C-based path of membrane_response() (theory manual §2.1), not principal axes
+// (theory manual §5.1).
 //
 // At a Gauss point the reference tangent plane carries an orthonormal material
 // frame (e1, e2); s_i is arc length along e_i. With the reference Jacobian

@@ -1,4 +1,4 @@
-// K₀_ab = T₀ Σ_q (w_q/H) (∂N_a/∂s · ∂N_b/∂s) n_q n_qᵀ (start_tension.hpp).
+// K₀_ab = T₀ Σ_q (w_q/H) (∂N_a/∂s · ∂N_b/∂s) n_q n_qᵀ (start_tension.hpp; theory manual (7.7)).
 #include "elements/start_tension.hpp"
 
 namespace tunica {

@@ -1,6 +1,6 @@
 #pragma once
 // Nonlinear least-squares identification of a material's constants from
-// inflation–extension data (THEORY §5), with Ceres Solver.
+// inflation–extension data (theory manual §8, §12.1), with Ceres Solver.
 //
 // The measured deformation (λθ from the size, λz) is taken as exact; the thin-tube
 // model predicts the loads, and the residuals are their misfits scaled by the data:

@@ -7,7 +7,7 @@
 //                  [[a1,a4,a6],[a4,a2,a5],[a6,a5,a3]] = L Lᵀ, diagonal of L ≥ 1e-4
 //   neo_hookean:   θ = (ln μ)
 //   mooney_rivlin: θ = (ln b1, t), b2 = t b1, t ≥ 0
-// (THEORY §3: convexity of Fung's law needs c > 0 and a positive definite
+// (theory manual §3: convexity of Fung's law needs c > 0 and a positive definite
 // quadratic form; a Cholesky factor with a positive diagonal gives exactly those.)
 // θ(0) is always the logarithm of a stress-like factor to which every stress, so
 // every predicted pressure and force, is proportional.

@@ -1,7 +1,7 @@
 #pragma once
 // Synthetic inflation–extension data from known constants: the thin tube of
 // thin_tube.hpp driven by pressure at fixed axial stretches (hoop equilibrium
-// solved for λθ, THEORY §5), with optional Gaussian measurement noise. Used by
+// solved for λθ, theory manual (8.1)), with optional Gaussian measurement noise. Used by
 // `tunica synthesize` to make examples/fit/ and by the round-trip tests, so that the
 // data come from the same material code the fit and the FE solver use.
 #include <cstdint>

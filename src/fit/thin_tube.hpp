@@ -1,5 +1,5 @@
 #pragma once
-// The thin-walled (membrane) tube of an inflation–extension test (THEORY §5, §7),
+// The thin-walled (membrane) tube of an inflation–extension test (theory manual §8, §12.1),
 // evaluated through the same material code as the finite element solver
 // (membrane_response: exact incompressible plane stress).
 //
@@ -56,7 +56,7 @@ std::optional<double> mid_radius_from_outer_diameter(const TubeGeometry& geometr
                                                      double lambda_z);
 
 /// The hoop stretch at which the tube carries pressure p at axial stretch λz:
-/// the root of S1(λθ, λz) = p R λz / H (THEORY §5 closed form; p r = σθ h),
+/// the root of S1(λθ, λz) = p R λz / H (theory manual (8.1); p r = σθ h),
 /// by bracketing and safeguarded Newton (dS1/dλθ = D11 λθ). Throws SolveError
 /// if no root exists for 1e-3 ≤ λθ ≤ 50 (e.g. beyond a neo-Hookean tube's pressure maximum).
 double hoop_stretch_at_pressure(const MembraneMaterial& material, const TubeGeometry& geometry, double pressure,

@@ -12,7 +12,7 @@ namespace tunica {
 const ComponentSpec& shell_part_spec() {
   static const ComponentSpec s{
       "parts", "axisymmetric_shell",
-      "An axisymmetric Kirchhoff–Love shell (selected by `element: axisymmetric_shell`; theory §11): a "
+      "An axisymmetric Kirchhoff–Love shell (selected by `element: axisymmetric_shell`; theory manual §11): a "
       "layered incompressible shell of revolution with membrane and bending stiffness, 2-node elements with a "
       "cubic Hermite meridian. Each node carries (r, z) and the meridian slopes (∂r/∂S, ∂z/∂S) (S: reference "
       "arc length), whose changes are the DOFs `slope_r`, `slope_z` of `boundary`. Same meshes (`line`, "

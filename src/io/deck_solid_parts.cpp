@@ -13,7 +13,7 @@ const ComponentSpec& solid_part_spec() {
   static const ComponentSpec s{
       "parts", "axisymmetric_solid",
       "An axisymmetric finite-strain solid (selected by `element: axisymmetric_solid`): 4-node "
-      "quadrilaterals in the (r, z) plane (theory §10), e.g. the plaque of an angioplasty model. It gets "
+      "quadrilaterals in the (r, z) plane (theory manual §10), e.g. the plaque of an angioplasty model. It gets "
       "the ordered node sets `<part>.inner`, `<part>.outer` (nodes in increasing z), `<part>.bottom`, "
       "`<part>.top` (increasing r) and `<part>.all`. Its material must be a solid material.",
       {required(one_of(text("element", "element type"),

@@ -1,6 +1,6 @@
 #pragma once
-// Reading axisymmetric solid parts (`element: axisymmetric_solid`, THEORY §6: the
-// plaque): the formulation and the structured (r, z) grid between two meridian
+// Reading axisymmetric solid parts (`element: axisymmetric_solid`, theory manual §10;
+// the plaque): the formulation and the structured (r, z) grid between two meridian
 // profiles (mesh/solid_grid.hpp), with the node sets `<part>.inner`, `<part>.outer`
 // (increasing z), `<part>.bottom`, `<part>.top` (increasing r) and `<part>.all`.
 #include "io/deck_node.hpp"

@@ -53,7 +53,7 @@ std::string deck_reference_markdown() {
   }
   s += "## `materials`\n\nA map from names to entries with `type` and the model's constants. Direction 1 is "
        "circumferential (hoop), 2 axial/meridional, 3 through the thickness. Every membrane model is incompressible; "
-       "plane stress is enforced exactly (THEORY §2). Solid materials (the `_solid` types) follow.\n\n";
+       "plane stress is enforced exactly (theory manual §2). Solid materials (the `_solid` types) follow.\n\n";
   for (const auto& [name, t] : material_types())
     s += fmt::format("### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
   s += "### Solid materials\n\nFor `axisymmetric_solid` parts only (a membrane part cannot use them, nor a solid "

@@ -1,5 +1,6 @@
 #pragma once
-// Follower pressure on a two-node axisymmetric membrane segment (THEORY §4).
+// Follower pressure on a two-node axisymmetric membrane segment (theory manual §6,
+// (6.1)–(6.2)).
 // The pressure p acts on the current surface along n ds = (Δz, −Δr) dξ (the
 // meridian direction turned clockwise: outward for a meridian that runs in +z
 // or from the lower pole to the upper pole), on the revolved area 2πr ds:

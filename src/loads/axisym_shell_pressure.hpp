@@ -2,9 +2,9 @@
 // Follower pressure on a 2-node axisymmetric Kirchhoff–Love shell element,
 // integrated on its cubic Hermite mid-surface (elements/hermite_meridian.hpp),
 // not on the nodal chord. As for the membrane (loads/axisym_pressure.hpp,
-// THEORY §4), p acts on the current mid-surface along n ds = (z_ξ, −r_ξ) dξ
+// theory manual §6), p acts on the current mid-surface along n ds = (z_ξ, −r_ξ) dξ
 // (the meridian direction turned clockwise) on the revolved area 2πr ds:
-//   δW_ext = ∫₀¹ 2π p r (z_ξ δr − r_ξ δz) dξ,
+//   δW_ext = ∫₀¹ 2π p r (z_ξ δr − r_ξ δz) dξ,      (theory manual (11.4))
 //   f_(j,r) = 2π p ∫ r z_ξ h_j dξ,   f_(j,z) = −2π p ∫ r r_ξ h_j dξ,
 // h_j the Hermite functions (positions and slopes). Its derivative, the load
 // stiffness (not symmetric):

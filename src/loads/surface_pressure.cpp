@@ -1,5 +1,5 @@
 // Follower pressure and enclosed volume of 3-D membrane elements
-// (surface_pressure.hpp). With g_α = Σ_a x_a ∂N_a/∂ξ^α and n = g1 × g2 (per unit
+// (surface_pressure.hpp; theory manual (6.4)–(6.6)). With g_α = Σ_a x_a ∂N_a/∂ξ^α and n = g1 × g2 (per unit
 // parametric area), at each Gauss point (weight w):
 //   pressure:  f_a = p Σ_q w N_a n,
 //              ∂f_a/∂x_b = p Σ_q w N_a (∂N_b/∂η [g1]× − ∂N_b/∂ξ [g2]×),

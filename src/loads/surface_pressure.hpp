@@ -1,5 +1,6 @@
 #pragma once
-// Follower pressure on 3-D membrane elements and the volume they enclose.
+// Follower pressure on 3-D membrane elements and the volume they enclose (theory
+// manual §6.1, (6.4)–(6.6)).
 //
 // Pressure p acts on the current surface along n dA = g1 × g2 dξ dη
 // (g_α = ∂x/∂ξ^α; node order gives the side, see surface_shape.hpp):

@@ -1,5 +1,5 @@
 #pragma once
-// Fung's exponential strain energy (THEORY §3, paper eq. for the rat aorta):
+// Fung's exponential strain energy (theory manual (3.1)–(3.2); paper eqs. 22–26, the rat aorta):
 //   W = c (exp Q − 1),
 //   Q = a1 E1² + a2 E2² + a3 E3² + 2 a4 E1 E2 + 2 a5 E2 E3 + 2 a6 E1 E3 + a7 E12²,
 // E_i = ½(C_ii − 1), E12 = ½ C12. a3 = a5 = a6 = 0 is the paper's

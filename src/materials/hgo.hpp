@@ -1,6 +1,7 @@
 #pragma once
 // Holzapfel–Gasser–Ogden (2000) strain energy in membrane form, with the fibre
-// dispersion of Gasser–Ogden–Holzapfel (2006). Incompressible: no volumetric part.
+// dispersion of Gasser–Ogden–Holzapfel (2006), theory manual (3.5). Incompressible: no
+// volumetric part.
 //   W = (μ/2)(I1 − 3) + Σ_{i=1,2} k1/(2 k2) [exp(k2 (I*_i − 1)²) − 1],
 //   I1 = C11 + C22 + C33,
 //   I4_i = a_i·C a_i = C11 cos²β + C22 sin²β ± 2 C12 cosβ sinβ,  a_{1,2} = (cosβ, ±sinβ, 0),

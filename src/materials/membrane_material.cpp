@@ -5,7 +5,7 @@
 namespace tunica {
 
 MembraneResponse membrane_response(const MembraneMaterial& material, const Eigen::Vector3d& C) {
-  // det C and its derivatives with respect to x = (C11, C22, C12).
+  // Theory manual §2.1. det C and its derivatives with respect to x = (C11, C22, C12), (2.6).
   const double det = C(0) * C(1) - C(2) * C(2);
   if (!(det > 0)) throw std::domain_error("membrane_response: det C must be positive");
   const double c33 = 1.0 / det;
@@ -23,7 +23,7 @@ MembraneResponse membrane_response(const MembraneMaterial& material, const Eigen
   const Eigen::Vector3d Wx3 = e.d2W.block<3, 1>(0, 3);
   const double W33 = e.d2W(3, 3);
 
-  // Reduced energy Ŵ(x) = W(x, C33(x)): gradient g and Hessian H (chain rule).
+  // Reduced energy Ŵ(x) = W(x, C33(x)), (2.5): gradient g and Hessian H (chain rule), (2.7).
   const Eigen::Vector3d g = Wx + W3 * dc33;
   const Eigen::Matrix3d H = Wxx + Wx3 * dc33.transpose() + dc33 * Wx3.transpose() +
                             W33 * dc33 * dc33.transpose() + W3 * d2c33;
@@ -31,7 +31,7 @@ MembraneResponse membrane_response(const MembraneMaterial& material, const Eigen
   MembraneResponse r;
   r.W = e.W;
   r.C33 = c33;
-  // S = 2 ∂Ŵ/∂C as a tensor: S11 = 2 g1, S22 = 2 g2, S12 = g3 (x3 stands for C12 and C21).
+  // Voigt form (2.8). S = 2 ∂Ŵ/∂C as a tensor: S11 = 2 g1, S22 = 2 g2, S12 = g3 (x3 stands for C12 and C21).
   r.S = Eigen::Vector3d(2.0 * g(0), 2.0 * g(1), g(2));
   // dS/dx = diag(2,2,1) H and dx = diag(2,2,1) dE (engineering shear).
   const Eigen::Vector3d s(2.0, 2.0, 1.0);

@@ -1,5 +1,5 @@
 #pragma once
-// Incompressible hyperelastic materials for membranes (THEORY §2).
+// Incompressible hyperelastic materials for membranes (theory manual §2).
 //
 // A material is a pure function of strain: it gives its strain energy W and the
 // first and second partial derivatives of W with respect to the membrane block
@@ -48,10 +48,10 @@ struct MembraneResponse {
   double C33 = 1;                                  ///< λ₃², thickness stretch squared
 };
 
-/// THEORY §2: plane stress by the Lagrange multiplier p = 2 C33 ∂W/∂C33 with
+/// Theory manual (2.1)–(2.2): plane stress by the Lagrange multiplier p = 2 C33 ∂W/∂C33 with
 /// C33 = 1/det C (orthonormal reference frame, det G = 1):
 ///   S^{αβ} = 2 ∂W/∂C_αβ − 2 C33 ∂W/∂C33 C^{αβ},  𝒞 = 2 dS/dC,
-/// computed as derivatives of the reduced energy Ŵ(C) = W(C, 1/det C).
+/// computed as derivatives of the reduced energy Ŵ(C) = W(C, 1/det C), (2.5)–(2.8).
 /// `C` = (C11, C22, C12) in the material frame; det C must be positive.
 MembraneResponse membrane_response(const MembraneMaterial& material, const Eigen::Vector3d& C);
 

@@ -1,4 +1,4 @@
-// Incompressible Mooney–Rivlin strain energy (THEORY §3): W = b1 (I1 − 3) + b2 (I2 − 3),
+// Incompressible Mooney–Rivlin strain energy (theory manual (3.4)): W = b1 (I1 − 3) + b2 (I2 − 3),
 // I1 = C11 + C22 + C33, I2 = ½(I1² − tr C²) = C11 C22 − C12² + C33 (C11 + C22).
 #include "materials/membrane_material.hpp"
 

@@ -1,4 +1,4 @@
-// Incompressible neo-Hookean strain energy (THEORY §3): W = (μ/2)(I1 − 3),
+// Incompressible neo-Hookean strain energy (theory manual (3.3)): W = (μ/2)(I1 − 3),
 // I1 = C11 + C22 + C33.
 #include "materials/membrane_material.hpp"
 

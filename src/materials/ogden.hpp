@@ -1,5 +1,5 @@
 #pragma once
-// Ogden's incompressible strain energy, N terms:
+// Ogden's incompressible strain energy, N terms (theory manual (3.6)):
 //   W = Σ_p μ_p/α_p (λ1^α_p + λ2^α_p + λ3^α_p − 3),
 // λ1², λ2² the eigenvalues of the in-plane block [[C11, C12], [C12, C22]] and
 // λ3² = C33. Written as W = g(c1) + g(c2) + g(c3) − Σ_p 3 μ_p/α_p with

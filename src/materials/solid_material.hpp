@@ -1,6 +1,6 @@
 #pragma once
-// (Nearly) incompressible hyperelastic materials for solid elements (THEORY §6:
-// the plaque of the angioplasty model).
+// (Nearly) incompressible hyperelastic materials for solid elements (theory manual §10,
+// (10.2); the plaque of the angioplasty model, §12.2).
 //
 // The strain energy is written in the decoupled (volumetric–isochoric) form
 //     W(C) = W_iso(C̄) + U(J),   C̄ = J^(−2/3) C,   J = det F = √(det C)

@@ -1,4 +1,4 @@
-// Compressible neo-Hookean solid in decoupled form (THEORY §6, the plaque):
+// Compressible neo-Hookean solid in decoupled form (theory manual (10.2); the plaque, §12.2):
 //
 //   W_iso(C̄) = (μ/2)(Ī1 − 3),   Ī1 = tr C̄ = J^(−2/3) I1,
 //   U(J)     = (κ/4)(J² − 1 − 2 ln J)

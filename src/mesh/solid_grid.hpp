@@ -1,6 +1,6 @@
 #pragma once
 // Structured grid of 4-node quadrilaterals in the (r, z) meridian plane for
-// axisymmetric solid parts (THEORY §6: the plaque, an idealized centric stenosis).
+// axisymmetric solid parts (theory manual §12.2: the plaque, an idealized centric stenosis).
 //
 // The solid lies between an inner and an outer meridian profile r_in(z) < r_out(z)
 // over z ∈ [z0, z1]. Node (i, j), i = 0 … n_r (inner to outer), j = 0 … n_z

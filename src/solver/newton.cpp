@@ -185,9 +185,10 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     rec.iteration = k;
     double scale = 0;
     const auto t0 = std::chrono::steady_clock::now();
-    // Backtracking line search: a correction that raises ‖R‖, makes it non-finite or leaves the
-    // admissible states (an inverted element) is halved, up to kMaxBacktracks times. The full
-    // Newton step is always tried first, so quadratic convergence is untouched near a solution.
+    // Backtracking line search (theory manual (7.4)): a correction that raises ‖R‖, makes it
+    // non-finite or leaves the admissible states (an inverted element) is halved, up to
+    // kMaxBacktracks times. The full Newton step is always tried first, so quadratic convergence
+    // is untouched near a solution.
     std::string inadmissible;
     for (;;) {
       inadmissible.clear();
@@ -200,8 +201,9 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       }
       // A correction is kept when ‖R‖ fell or when it took the energy slope along it down to half:
       // |Δu·R(u + Δu)| ≤ ½ |Δu·R(u)| (the step went at least halfway to the energy's stationary
-      // point along Δu). From a stress-free membrane the first correction often raises ‖R‖ while
-      // leaving a small slope; halving it only wastes iterations (sphere octant n = 41: 7 → 6).
+      // point along Δu; theory manual (7.4)). From a stress-free membrane the first correction can
+      // raise ‖R‖ through stiff in-plane modes of little energy while leaving a small slope;
+      // halving such a correction only costs iterations.
       const bool slope_ok = inadmissible.empty() && std::isfinite(rec.residual) && k > 0 && slope0 != 0 &&
                             std::abs(du.head(nf).dot(Rf)) <= 0.5 * std::abs(slope0);
       const bool worse = !inadmissible.empty() || !std::isfinite(rec.residual) ||

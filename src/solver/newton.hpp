@@ -1,6 +1,7 @@
 #pragma once
 // Newton–Raphson for one load increment: R(u) = 0 on the free DOFs with the
-// consistent tangent K = ∂R/∂u. Newton sees the residual and the Jacobian only.
+// consistent tangent K = ∂R/∂u (theory manual §7). Newton sees the residual and the
+// Jacobian only.
 #include <functional>
 
 #include "assembly/system.hpp"
@@ -54,11 +55,11 @@ bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::V
                      double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
                      double& solve_seconds);
 
-/// Iterates on u (prescribed DOFs already set) until the convergence tests of
-/// `settings` hold: ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
+/// Iterates on u (prescribed DOFs already set; theory manual (7.1)) until the convergence tests
+/// of `settings` hold, (7.2): ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
 /// round-off (≤ 1e-14 of the force scale of System::assemble). On failure u is left as it was last.
 /// With a volume constraint the pressure loads.pressure[constraint->load] is a further
-/// unknown: the bordered system [K −g; ∂V/∂uᵀ 0] [Δu; Δp] = −[R; V − target]
+/// unknown: the bordered system (7.5) [K −g; ∂V/∂uᵀ 0] [Δu; Δp] = −[R; V − target]
 /// (g = ∂f_ext/∂p) is solved as one sparse matrix, which stays regular at a
 /// pressure maximum, and |V − target| ≤ tol_r |target| is required too.
 ///
@@ -66,7 +67,7 @@ bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::V
 /// converged state u_n (`converged`; u differs from it on prescribed DOFs only), the first
 /// correction is not computed at u (where the moved boundary nodes alone have taken the
 /// whole prescribed increment Δu_p, e.g. one ring of elements stretched several-fold) but
-/// linearized at u_n:
+/// linearized at u_n, theory manual (7.3):
 ///   K_ff(u_n) Δu_f = −R_f(u_n) − K_fp(u_n) Δu_p,
 /// with the new loads. K_fp Δu_p, the directional derivative of R along Δu_p, is taken by
 /// central differences, (R(u_n + hΔu_p) − R(u_n − hΔu_p))/2h with h = 1e-6 (error
@@ -78,7 +79,7 @@ bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::V
 /// Stress-free start (settings.stiffen_stress_free_start, no volume constraint): when the increment
 /// starts at the reference state (u_n = 0), the first correction — the predictor's, or iteration
 /// 0's — is computed with K + K₀, K₀ the normal-tension stiffness of a Laplace tension estimate on
-/// every pressurized 3-D membrane element (System::add_start_stiffness; theory manual §7.2). A
+/// every pressurized 3-D membrane element (System::add_start_stiffness; theory manual §7.2, (7.6)–(7.8)). A
 /// stress-free membrane resists the relative normal motion of its nodes only with its facets'
 /// in-plane stiffness, which is mesh-irregular (a cube-sphere's valence-3 corner) and vanishes as
 /// the mesh is refined (a cylinder's inextensional modes), while the pressure's load stiffness

@@ -50,7 +50,7 @@ TEST(BadContact, UnknownRigidSurface) {
                "undefined rigid surface 'sleve'");
 }
 
-TEST(BadContact, RigidKeyWithoutAValue) {  // found by fuzzing: `rigid:` with no value was present but unread
+TEST(BadContact, RigidKeyWithoutAValue) {  // `rigid:` present but empty: refused, not taken for absent
   expect_error("rigid-without-value", "rigid: sleeve,", "rigid: ,", "contact.wall_sleeve.rigid",
                "has no value");
 }

@@ -1,4 +1,4 @@
-// Finite-difference checks of the penalty contact kernels (THEORY §6, contact/):
+// Finite-difference checks of the penalty contact kernels (theory manual §9, contact/):
 //  - node to segment (slave and master deformable): f = ∂Π/∂x and K = ∂f/∂x by
 //    central differences at random states — segments of any orientation and
 //    length, the slave projecting inside the segment, penetrations from 10⁻³ to

@@ -1,12 +1,12 @@
 // Finite-difference checks of the axisymmetric membrane element and the
-// follower pressure (THEORY §4, §7):
+// follower pressure (theory manual §5, §6, §8):
 //  - the internal force is the gradient of the stored energy Σ w Ŵ;
 //  - the element tangent (material + geometric) and the pressure load
 //    stiffness are the derivatives of the element residual R = f_int − f_p,
 // at distorted states (stretched, sheared, tilted, off-cylinder), for every
 // material, relative error below 1e-6; the assembled tangent of a whole model
 // against its assembled residual; and the pressure stiffness of a closed
-// surface is symmetric (Schweizerhof & Ramm).
+// surface is symmetric (Schweizerhof & Ramm; theory manual §4).
 #include <gtest/gtest.h>
 
 #include <numbers>

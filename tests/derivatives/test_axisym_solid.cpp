@@ -1,5 +1,5 @@
 // Finite-difference and consistency checks of the solid material and the
-// four-node axisymmetric solid element (THEORY §6, the plaque):
+// four-node axisymmetric solid element (theory manual §10, the plaque):
 //  - material: S = 2 ∂W/∂C and 𝒞 = 2 ∂S/∂C by central differences at random
 //    3-D states (stretch and shear), both the isochoric part and the total;
 //  - element (displacement and mean-dilatation): f = ∂Π_e/∂x and K = ∂f/∂x by

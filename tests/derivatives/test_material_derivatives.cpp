@@ -1,4 +1,4 @@
-// Finite-difference checks of every built-in material (THEORY §2, §7):
+// Finite-difference checks of every built-in material (theory manual §2.1, §3, §8):
 //  - the material's own derivatives of W(C11, C22, C12, C33);
 //  - the plane-stress incompressible reduction: S against the reduced energy
 //    Ŵ(C) = W(C, 1/det C), and the tangent D against S,
@@ -79,7 +79,7 @@ TEST(MaterialDerivatives, StressIsTheDerivativeOfTheReducedEnergyAndTangentOfStr
 }
 
 TEST(MaterialDerivatives, FungTwoDimensionalApproachMatchesThePaperClosedForms) {
-  // THEORY §3: S1 = 2c(a1E1 + a4E2)e^Q, D11 = 2c[a1 + 2(a1E1 + a4E2)²]e^Q, ...
+  // Theory manual (3.2): S1 = 2c(a1E1 + a4E2)e^Q, D11 = 2c[a1 + 2(a1E1 + a4E2)²]e^Q, ...
   const double c = 0.061163, a1 = 0.68238, a2 = 0.60558, a4 = 0.1067;
   const auto m = material_from_yaml("{type: fung, c: 0.061163, a1: 0.68238, a2: 0.60558, a4: 0.1067}");
   for (double l1 : {0.87, 1.0, 1.3, 1.69})
@@ -98,7 +98,7 @@ TEST(MaterialDerivatives, FungTwoDimensionalApproachMatchesThePaperClosedForms) 
 }
 
 TEST(MaterialDerivatives, NeoHookeanEquibiaxialStressMatchesClosedForm) {
-  // S_α = μ(1 − λ3²/λα²) with λ3 = 1/λ² (equibiaxial): σ = μ(λ² − λ⁻⁴) (THEORY §7 balloon).
+  // S_α = μ(1 − λ3²/λα²) with λ3 = 1/λ² (equibiaxial): σ = μ(λ² − λ⁻⁴) (theory manual (8.3), the balloon).
   const auto m = material_from_yaml("{type: neo_hookean, mu: 0.3}");
   for (double l : {0.9, 1.2, 1.383, 2.0}) {
     const MembraneResponse r = membrane_response(*m, Eigen::Vector3d(l * l, l * l, 0));

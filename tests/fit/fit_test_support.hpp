@@ -13,14 +13,14 @@ namespace tunica::fit_test {
 constexpr double kMmHg = 133.322387415e-6;  // N/mm² per mmHg (UDUNITS-2)
 constexpr double kKPa = 1e-3;               // N/mm² per kPa
 
-/// Fung constants (c [N/mm²], a1, a2, a4) of the paper (THEORY §5).
+/// Fung constants (c [N/mm²], a1, a2, a4) of the paper (theory manual §12.1).
 inline Eigen::VectorXd paper_fung() { return Eigen::Vector4d(61.163 * kKPa, 0.68238, 0.60558, 0.1067); }
 
 inline std::unique_ptr<MembraneMaterial> make(const std::string& model, const Eigen::VectorXd& k) {
   return material_parametrization(model).make_material(k);
 }
 
-/// The rat aorta of THEORY §5: D = 1.648 mm, H = 0.122 mm.
+/// The rat aorta of theory manual §12.1: D = 1.648 mm, H = 0.122 mm.
 inline Specimen rat_aorta(TubeEnds ends = TubeEnds::open) {
   Specimen s;
   s.geometry.H = 0.122;

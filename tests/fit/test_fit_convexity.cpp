@@ -1,4 +1,4 @@
-// Convexity of every fitted Fung material (THEORY §3: c > 0 and a positive definite
+// Convexity of every fitted Fung material (theory manual §3: c > 0 and a positive definite
 // quadratic form): guaranteed by the Cholesky parametrisation with a bounded-below
 // diagonal, whatever the start — even a non-convex one, which is projected first.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The thin-tube model of `tunica fit` against closed forms (THEORY §5, §7): the
+// The thin-tube model of `tunica fit` against closed forms (theory manual §8): the
 // same material code as the FE solver, reduced to a membrane tube.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 using namespace tunica;
 using namespace tunica::fit_test;
 
-// THEORY §7: at fixed λz any material carries S_θ = p R λz / H; hoop_stretch_at_pressure
+// Theory manual (8.1): at fixed λz any material carries S_θ = p R λz / H; hoop_stretch_at_pressure
 // finds that state and tube_state gives back the pressure.
 TEST(FitThinTube, HoopEquilibriumClosedFormForAnyMaterial) {
   const TubeGeometry g = rat_aorta().geometry;
@@ -39,7 +39,7 @@ TEST(FitThinTube, NoStateBeyondTheNeoHookeanPressureLimit) {
   EXPECT_THROW(hoop_stretch_at_pressure(*nh, g, 1.1 * limit, 1.6), SolveError);
 }
 
-// Paper §4.1 / THEORY §5: prestretched to λz = 1.6 at p = 0, the tube narrows to λθ = 0.8695.
+// Paper §4.1 / theory manual (8.2), §12.1: prestretched to λz = 1.6 at p = 0, the tube narrows to λθ = 0.8695.
 TEST(FitThinTube, PaperPrestretchHoopStretch) {
   const auto fung = make("fung2d", paper_fung());
   EXPECT_NEAR(hoop_stretch_at_pressure(*fung, rat_aorta().geometry, 0.0, 1.6), 0.8695, 5e-5);

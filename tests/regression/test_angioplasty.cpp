@@ -1,4 +1,4 @@
-// The balloon-angioplasty example (examples/balloon-angioplasty.yaml, THEORY §6, a draft of
+// The balloon-angioplasty example (examples/balloon-angioplasty.yaml, theory manual §12.2, a draft of
 // the paper's §4.2): a prestretched Fung artery, a neo-Hookean solid plaque entering stress
 // free, a Mooney–Rivlin balloon entering and inflated to 2.05 N/mm², penalty contact
 // plaque–artery and balloon–plaque. Checks what the paper's example shows qualitatively:
@@ -91,7 +91,7 @@ PenaltyRun run_with_penalty(const std::string& factor_text) {
 
 }  // namespace
 
-// The penalty study as a regression: ten times both penalties (2e3 → 2e4 N/mm³)
+// The penalty study as a regression: ten times both penalties (2e3 → 2e4 N/mm³)
 // changes the maximum balloon–plaque contact pressure at 2.05 N/mm² by under 2 %, and the
 // penetration falls about tenfold (docs/examples/balloon-angioplasty.md, "Penalty study").
 TEST(Angioplasty, TenfoldPenaltyChangesThePeakContactPressureByUnderTwoPercent) {

@@ -2,7 +2,7 @@
 // (examples/balloon-angioplasty-shell.yaml, balloon of 51 elements) against the membrane
 // deck (examples/balloon-angioplasty.yaml) on the same meshes (51-element balloon, 5 × 100
 // plaque, the shell deck's; the membrane deck has 101 and 5 × 300): the paper's
-// shell cross-check (THEORY §6), "almost identical results". Checks: both reach
+// shell cross-check (theory manual §12.2), "almost identical results". Checks: both reach
 // 2.05 N/mm² without cut-backs; the lumen opens to within 1e-3 mm of the membranes'; the
 // peak contact pressure agrees within 2 % and the total balloon–plaque contact force within
 // 4 % (3 % lower with shells); the contact zone is one contiguous run of balloon nodes around

@@ -1,4 +1,4 @@
-// Volumetric locking of the four-node axisymmetric solid (THEORY §6): the plain
+// Volumetric locking of the four-node axisymmetric solid (theory manual §10): the plain
 // displacement element (Q1) against the mean-dilatation element (Q1/P0) on a
 // nearly incompressible (κ/μ = 10⁴) neo-Hookean thick-walled cylinder in plane
 // strain (λ_z = 1) whose inner radius is prescribed.

@@ -1,5 +1,5 @@
 // Axisymmetric membranes in contact with deformable masters (deck key `master`,
-// penalty Π = ½ ε ⟨−g_N⟩² A_s per slave node, node to segment; theory manual §9.1):
+// penalty Π = ½ ε ⟨−g_N⟩² A_s per slave node, node to segment; theory manual §9.1, §9.2):
 // (b) cylinder–cylinder closed form: a neo-Hookean tube (slave, R_i = 1 mm) inflated
 //     inside a Fung tube (master, R_o = 1.2 mm), both at λ_z = 1 (ends held axially),
 //     offset c = half thicknesses: first free inflation, then both deform together.

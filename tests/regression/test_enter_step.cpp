@@ -1,4 +1,4 @@
-// Parts that enter in a later step (`enter_step`, THEORY §6: the plaque is placed stress free in
+// Parts that enter in a later step (`enter_step`, theory manual §10.1: the plaque is placed stress free in
 // the prestretched artery). The deck: an artery prestretched and pressurized in step 1, a solid
 // plaque entering in step 2, where its top is pushed down by 0.05 mm.
 // (1) During step 1 every plaque node stays exactly at its reference position while the

@@ -3,7 +3,7 @@
 // neo-Hookean sphere octant inflated from rest to λ = 1.2 in one increment is the case
 // it is for: the first correction raises ‖R‖ (in-plane forces of the faceting modes,
 // stiff but of little energy) while going most of the way along the softening
-// pressure–stretch curve. Halving it, as a residual-only test did, cost an iteration.
+// pressure–stretch curve. Halving it, as a residual-only test would, costs an iteration.
 // The case needs the plain tangent at the stress-free start (`stress_free_start: exact`):
 // the default stiffened first correction does not raise ‖R‖ (test_stress_free_start.cpp).
 #include <gtest/gtest.h>

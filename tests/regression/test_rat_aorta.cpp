@@ -1,4 +1,4 @@
-// The paper's first example (THEORY §5, paper §4.1): the rat-aorta deck
+// The paper's first example (theory manual §12.1, paper §4.1): the rat-aorta deck
 // against the thin-tube closed form, with 1 and 50 elements, and the Newton
 // convergence the paper reports (Table 1).
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ namespace {
 
 const std::string kDeck = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
 
-// Independent closed form (THEORY §3, §5), written out here rather than taken from the material classes.
+// Independent closed form (theory manual (3.2), (8.1)), written out here rather than taken from the material classes.
 constexpr double c = 61.163, a1 = 0.68238, a2 = 0.60558, a4 = 0.1067;  // kPa
 constexpr double R = 0.763, H = 0.122, lz = 1.6;                          // mm
 constexpr double mmHg_kPa = 0.133322387415;  // UDUNITS-2's mmHg
@@ -82,7 +82,7 @@ TEST(RatAorta, PrestretchGivesTheZeroPressureHoopStretchOfTheory) {
   for (const Row& row : r.capture.rows)
     if (row.info.step == 1) last = &row;
   ASSERT_NE(last, nullptr);
-  // S1 = 0  ⇔  E1 = −a4 E2 / a1 (THEORY §5: λθ(p = 0) = 0.8695).
+  // S1 = 0  ⇔  E1 = −a4 E2 / a1 (theory manual (8.2): λθ(p = 0) = 0.8695).
   const double E1 = -a4 * 0.5 * (lz * lz - 1) / a1;
   EXPECT_NEAR(last->values[lt], std::sqrt(2 * E1 + 1), 1e-9);
   EXPECT_NEAR(last->values[lt], 0.8695, 5e-5);

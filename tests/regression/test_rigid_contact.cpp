@@ -4,7 +4,7 @@
 //     (polyline): the contact pressure is p at the interior nodes and the total contact
 //     force is p × the annulus' area;
 // (b) a neo-Hookean tube at λ_z = 1 inflated into a rigid sleeve r ≤ R_c (cylinder,
-//     inside): before contact p = (μH/R)(1 − λ⁻⁴) (THEORY §5, §7: S_θ = p R λ_z/H with
+//     inside): before contact p = (μH/R)(1 − λ⁻⁴) (theory manual (8.1): S_θ = p R λ_z/H with
 //     S_θ = μ(1 − λ⁻⁴ λ_z⁻²)); after contact the contact pressure is p − p_free(R_c/R);
 //     with a soft penalty, Newton converges quadratically in the increments whose active
 //     set does not change.

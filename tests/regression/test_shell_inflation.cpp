@@ -1,5 +1,5 @@
 // Axisymmetric shells (element axisymmetric_shell) against the membrane and the closed
-// forms where bending is negligible (THEORY §7):
+// forms where bending is negligible (theory manual §8, §11):
 //  - the thin neo-Hookean sphere of examples/balloon-sphere.yaml (H/R = 0.01) as a shell,
 //    equator held by symmetry (z, slope_r), pole on the axis (r, slope_z): the pressure
 //    matches p = 2μ(H/R)(λ⁻¹ − λ⁻⁷) to O((H/R)²) = 1e-4 at every increment (the
@@ -8,7 +8,7 @@
 //    held in slope_r: hoop equilibrium of the Kirchhoff–Love wall under pressure on its
 //    mid-surface, ∫ σ_θ r/(r + η) dη = p r (≈ N_θ − M_θ/r), to round-off at every Gauss
 //    point, and the hoop stretch within 1.5 % of the membrane's thin-tube closed form
-//    although H/R = 0.16 (0.9 % found);
+//    although H/R = 0.16 (the shell differs by about 0.9 %);
 //  - the shell artery and balloon of tests/support/shell_decks.hpp run through contact.
 #include <gtest/gtest.h>
 

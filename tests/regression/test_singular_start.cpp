@@ -1,9 +1,9 @@
 // A flat membrane stretched biaxially from its stress-free state: with no stress
 // and no curvature its tangent has no stiffness against out-of-plane motion of
 // the interior nodes (singular to round-off). The first correction is therefore
-// wild out of the plane; the line search halves it (the halving once converged
-// to a third of the step instead of shrinking it); once the sheet is in tension
-// its tangent is regular and Newton converges to the exact homogeneous state
+// wild out of the plane; the line search halves it (each halving halves the correction
+// actually taken, so repeated halvings approach the start of the step); once the sheet
+// is in tension its tangent is regular and Newton converges to the exact homogeneous state
 // x = 1.2 X, y = 1.2 Y, z = 0.
 // The diagonal perturbation of a tangent that the solver reports singular is
 // tested directly (SolvePerturbed.*).

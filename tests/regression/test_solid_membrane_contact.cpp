@@ -1,5 +1,5 @@
 // Contact between a solid part's boundary and a membrane, with the solid entering in step 2
-// (THEORY §6: the plaque placed in the prestretched, pressurized artery). The slave is the
+// (theory manual §12.2: the plaque placed in the prestretched, pressurized artery). The slave is the
 // plaque's outer surface (the ordered node set plaque.outer of the solid grid), the master the
 // artery's meridian (reversed: the slave is inside). Step 1 inflates the artery while the
 // plaque is held: the pair is inactive. Step 2 opens the plaque's lumen radially until its
@@ -54,7 +54,7 @@ TEST(SolidMembraneContact, ThePlaqueEntersThenPressesTheArteryOutwards) {
   // output is per current area, the penetration's force per reference area).
   EXPECT_NEAR(last[pen] * 50.0 / last[pc], 1.0, 0.5);
   // The final, pressed state as step 1 would see it: the pair waits for the plaque, so its
-  // nodes report no contact (the outputs once called them active).
+  // nodes report no contact (the outputs follow the assembly, which skips a waiting pair).
   double in_step2 = 0;
   for (const auto& s : a.system().contact_states(a.displacement(), 0, 1)) in_step2 = std::max(in_step2, s.pressure);
   EXPECT_GT(in_step2, 1e-3);

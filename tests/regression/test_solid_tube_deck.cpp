@@ -2,7 +2,7 @@
 // `axisymmetric_solid` deck part, in plane strain (both z faces held in z), its inner
 // radius prescribed from R_i = 1 to r_i = 1.5 mm: the inner pressure read from the radial
 // reaction, p = F_r/(2π r_i h) (F_r on the whole circumference), against the incompressible
-// closed form (docs/theory.md §10.2)
+// closed form (theory manual §10.2, (10.9))
 //   p = μ [ln(λ_i/λ_o) + ½(λ_o⁻² − λ_i⁻²)],   λ = r/R,   r_o² = R_o² + r_i² − R_i²,
 // which is first checked against an independent numerical integral of the equilibrium
 // equation, p = μ ∫_{r_i}^{r_o} (λ² − λ⁻²) dr/r. Under refinement through the wall the

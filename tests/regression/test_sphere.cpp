@@ -1,4 +1,4 @@
-// Thin spherical balloons (THEORY §7) modelled as axisymmetric spheres below
+// Thin spherical balloons (theory manual (8.3)) modelled as axisymmetric spheres below
 // their pressure maximum: neo-Hookean p = 2μ(H/R)(λ⁻¹ − λ⁻⁷) and Mooney–Rivlin
 // p = 4(H/R)(λ⁻¹ − λ⁻⁷)(b1 + b2λ²), with λ the equator stretch; and the error's
 // rate under mesh refinement (the faceted meridian converges at O(h²): 7.1e-3,

@@ -1,6 +1,6 @@
 // Spherical balloons as 3-D membranes (examples/balloon-sphere-3d.yaml: an
 // octant of 4-node membranes with symmetry planes) inflated by volume control
-// through the pressure maximum to λ > 2, against THEORY §7:
+// through the pressure maximum to λ > 2, against theory manual (8.3):
 //   neo-Hookean    p = 2μ(H/R)(λ⁻¹ − λ⁻⁷),
 //   Mooney–Rivlin  p = 4(H/R)(λ⁻¹ − λ⁻⁷)(b1 + b2λ²),
 // with λ = (V/V₀)^⅓ from the enclosed volume of the faceted octant; and the

@@ -1,5 +1,5 @@
 // The stiffened first correction from a stress-free state (solver/newton.hpp, theory manual
-// §7.2): the same converged state as the plain tangent, in fewer iterations, and a tangent
+// §7.2, (7.6)–(7.8)): the same converged state as the plain tangent, in fewer iterations, and a tangent
 // CHOLMOD can factorize.
 //  - The thin neo-Hookean sphere octant inflated from rest to λ = 1.2 in one increment: the
 //    plain first correction dimples the cube-sphere's valence-3 corner and Newton needs 6

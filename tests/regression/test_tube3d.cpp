@@ -1,5 +1,5 @@
 // The rat aorta as a 3-D Fung membrane tube (examples/rat-aorta-3d.yaml) against
-// the thin-tube closed form (THEORY §5) and the axisymmetric model. The quarter
+// the thin-tube closed form (theory manual (8.1)) and the axisymmetric model. The quarter
 // circumference is a regular polygon of n facets, φ = π/2n each. Inflated
 // uniformly, a node takes p·chord·cos(φ/2) from the pressure on its two facets and
 // 2T sin(φ/2) from the hoop tension: T = p r cos(φ/2), the Laplace law of a circle
@@ -25,7 +25,7 @@ namespace {
 
 const std::string kDeck = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml";
 
-// Independent closed form (THEORY §3, §5).
+// Independent closed form (theory manual (3.2), (8.1)).
 constexpr double c = 61.163, a1 = 0.68238, a2 = 0.60558, a4 = 0.1067;  // kPa
 constexpr double R = 0.763, H = 0.122, lz = 1.6;                          // mm
 constexpr double mmHg_kPa = 0.133322387415;
@@ -69,7 +69,7 @@ Errors run(const std::string& text, int around, double tol = 1e-9) {
     EXPECT_NEAR(row.values[lzc], lz, tol);
     double F_exact = 0;
     for (const double Rc : {R, R_eff}) {
-      const double St = pk * Rc * lz / H;  // THEORY §7: Sθ = p R λz / H
+      const double St = pk * Rc * lz / H;  // theory manual (8.1): Sθ = p R λz / H
       const double Et = solve_E_theta(St, Ez);
       const double lt_exact = std::sqrt(2 * Et + 1);
       const double Sz = S2(Et, Ez);
@@ -107,7 +107,7 @@ std::string with_mesh(int around, const std::string& shape, int along) {
 TEST(Tube3d, FungTubeMatchesTheClosedFormInEveryInflationIncrement) {
   // Quads only: a union-jack triangulated tube with free end rings has near-mechanisms at
   // zero stress, too soft for the first Newton step of the prestretch from the stress-free
-  // state (an open question, see the session notes); triangles are checked on the sphere,
+  // state (not resolved here); triangles are checked on the sphere,
   // the clamped tube (RotationInvariance) and the patch tests.
   for (const auto& [shape, along, tol] : {std::tuple{"quad", 2, 1e-9}}) {
     const Errors e = run(with_mesh(8, shape, along), 8, tol);

@@ -1,5 +1,5 @@
 #pragma once
-// The closed 3-D Fung tube of the benchmark (the rat aorta of THEORY §5: R = 0.763 mm,
+// The closed 3-D Fung tube of the benchmark (the rat aorta of theory manual §12.1: R = 0.763 mm,
 // H = 0.122 mm), length 2πR, ends free to slide radially (held on the planes x = 0 and y = 0
 // against rigid motion), circumferential/axial frame, staggered triangles (around = along),
 // stretched axially to λz = 1.3 with 40 mmHg in 4 increments, then inflated to 120 mmHg.

@@ -1,5 +1,5 @@
 #pragma once
-// The thin neo-Hookean sphere octant of THEORY §7 (R = 1 mm, H = 0.01 mm, μ = 1 MPa; 4-node
+// The thin neo-Hookean sphere octant of theory manual (8.3) (R = 1 mm, H = 0.01 mm, μ = 1 MPa; 4-node
 // membranes, n × n quads per patch, symmetry planes) inflated by a follower pressure to the
 // closed-form value at λ = 1.2. Shared by tests/regression/test_line_search.cpp and
 // bench/bench.cpp (which includes it by its relative path); bench/peers/sphere_tunica.sh writes
@@ -11,7 +11,7 @@
 
 namespace tunica::test {
 
-/// THEORY §7: p = 2 μ (H/R)(λ⁻¹ − λ⁻⁷), μ = 1 MPa, H/R = 0.01, λ = 1.2 (MPa = N/mm²).
+/// Theory manual (8.3): p = 2 μ (H/R)(λ⁻¹ − λ⁻⁷), μ = 1 MPa, H/R = 0.01, λ = 1.2 (MPa = N/mm²).
 inline double sphere_octant_pressure() {
   const double l = 1.2;
   return 2.0 * 1.0 * 0.01 * (1.0 / l - std::pow(l, -7));

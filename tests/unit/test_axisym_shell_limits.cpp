@@ -4,7 +4,7 @@
 //    meridian through them reproduces a sphere's curvatures;
 //  - membrane limit: a stretched, pressurized tube gives the membrane element's
 //    nodal forces, and a uniformly inflated sphere the closed-form membrane
-//    pressure p = 2μ(H/R)(λ⁻¹ − λ⁻⁷) (THEORY §7), both with a difference
+//    pressure p = 2μ(H/R)(λ⁻¹ − λ⁻⁷) (theory manual (8.3)), both with a difference
 //    O((H/R)²): below a bound, and falling fourfold when H halves;
 //  - bending: cylindrical bending of a thin annular plate far from the axis to a
 //    uniform curvature κ (meridian bent into a circular arc, no mid-surface strain):

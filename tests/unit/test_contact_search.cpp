@@ -1,4 +1,4 @@
-// The contact search and the contact force balance (THEORY §6, contact/):
+// The contact search and the contact force balance (theory manual §9, §9.1, contact/):
 //  - large sliding: a slave carried along a curved master chain, in single steps
 //    and in jumps across many segments, is always given its own segment and ξ;
 //  - corners: the fan of a convex corner is a vertex feature outside (inactive),

@@ -1,6 +1,7 @@
 // The structured (r, z) grid of axisymmetric solid parts (mesh/solid_grid.hpp): node numbering,
 // counter-clockwise elements, the ordered surface chains, the profiles (constant, polyline,
-// cosine and circular bumps) and the geometric checks; THEORY §6's stenosis is buildable.
+// cosine and circular bumps) and the geometric checks; the stenosis of the paper's angioplasty
+// example (theory manual §12.2) is buildable.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -84,7 +85,7 @@ TEST(SolidGrid, ProfilesPassThroughTheirDefiningPoints) {
   EXPECT_THROW(profile_radius(bump(RadiusProfile::Type::circular, 2.0, 0.5), 0.5, 0, 2), std::invalid_argument);
 }
 
-TEST(SolidGrid, TheStenosisOfTheorySection6) {
+TEST(SolidGrid, TheStenosisOfThePapersAngioplasty) {
   // 3.8 mm long, 0.01 mm thick at both ends, lumen radius 0.39 mm at the centre, inside an
   // artery whose inner wall is at r = 0.6335 mm; 5 × 100 = 500 elements as in the paper.
   SolidGridSpec s;

@@ -1,4 +1,4 @@
-// Element mean curvature of faceted surfaces (mesh/surface_curvature.hpp): 1/R on a sphere
+// Element mean curvature of faceted surfaces (model/surface_curvature.hpp): 1/R on a sphere
 // octant of quads and of triangles (every element, boundary elements included: a sphere's
 // normal curvature is 1/R in every direction; triangles more roughly), about 1/(2R) on a cylinder, 0 on a plane.
 #include <gtest/gtest.h>

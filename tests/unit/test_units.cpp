@@ -7,7 +7,7 @@ using namespace tunica;
 
 TEST(Units, MmHgToMegapascalInMillimetreNewtonSystem) {
   const UnitSystem u("mm", "N");
-  // UDUNITS-2 defines 1 mmHg = 133.322387415 Pa (13.5951 g/cm³ · g_n · 1 mm); THEORY §5 rounds to 133.322.
+  // UDUNITS-2 defines 1 mmHg = 133.322387415 Pa (13.5951 g/cm³ · g_n · 1 mm); the theory manual (§12) rounds to 133.322.
   EXPECT_NEAR(u.to_internal(200, "mmHg", Dimension::pressure), 200 * 133.322387415e-6, 1e-12);
   EXPECT_NEAR(u.to_internal(61.163, "kPa", Dimension::pressure), 0.061163, 1e-15);
   EXPECT_NEAR(u.to_internal(0.122, "mm", Dimension::length), 0.122, 1e-15);

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Figures of the balloon-angioplasty example (THEORY.md §6; the paper's Figs. 4 and 5).
+"""Figures of the balloon-angioplasty example (theory manual §12.2; the paper's Figs. 4 and 5).
 
 Usage: /usr/bin/python3 tools/figures/angioplasty_figures.py RESULT_DIR OUT_DIR
 

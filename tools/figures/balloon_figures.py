@@ -23,7 +23,7 @@ makes them); the script then also writes
 and prints each mesh's error, the observed rate between successive meshes and the
 least-squares slope of log(error) against log(N).
 
-The closed form (THEORY.md §7) is evaluated here, independently of the C++ code:
+The closed form (theory manual (8.3)) is evaluated here, independently of the C++ code:
 a thin incompressible neo-Hookean sphere of radius R and thickness H inflated to
 the stretch lambda = r/R carries p = 2 mu (H/R) (1/lambda - 1/lambda^7), with its
 maximum at lambda = 7^(1/6). lambda is the FE equator radius over R.
@@ -54,7 +54,7 @@ LEGEND_CF = "closed form (thin neo-Hookean sphere)"
 
 
 def p_closed_form(lam):
-    """Internal pressure (kPa) at the stretch lam, THEORY §7."""
+    """Internal pressure (kPa) at the stretch lam, theory manual (8.3)."""
     lam = np.asarray(lam, dtype=float)
     return 2.0 * MU_KPA * (H_MM / R_MM) * (1.0 / lam - lam ** -7)
 

@@ -14,9 +14,9 @@ Reads RESULT_DIR/history.csv and RESULT_DIR/newton.csv written by
 and prints the largest relative differences between the finite element values
 and the closed form over the inflation increments.
 
-The closed form (THEORY.md §5) is computed here, independently of the C++ code:
+The closed form (theory manual (8.1)) is computed here, independently of the C++ code:
 at fixed axial stretch lambda_z, equilibrium of a thin tube gives
-S_theta = p R lambda_z / H; Fung's two-dimensional law (THEORY.md §3)
+S_theta = p R lambda_z / H; Fung's two-dimensional law (theory manual (3.2))
 S1 = 2c (a1 E1 + a4 E2) e^Q is then solved for E1 = E_theta by bisection.
 """
 
@@ -31,7 +31,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-# Example data (THEORY.md §5; examples/rat-aorta-inflation.yaml), SI-derived units kPa and mm.
+# Example data (theory manual §12.1; examples/rat-aorta-inflation.yaml), SI-derived units kPa and mm.
 C_KPA = 61.163  # c = 0.61163e5 Pa
 A1, A2, A4 = 0.68238, 0.60558, 0.1067
 R_MM = 0.763  # mid-surface radius (D - H)/2
@@ -55,12 +55,12 @@ def fung_q(e1, e2):
 
 
 def fung_s1(e1, e2=E_Z):
-    """Circumferential 2nd Piola-Kirchhoff stress (kPa), THEORY §3 / paper eq. (25)."""
+    """Circumferential 2nd Piola-Kirchhoff stress (kPa), theory manual (3.2) / paper eq. (25)."""
     return 2.0 * C_KPA * (A1 * e1 + A4 * e2) * np.exp(fung_q(e1, e2))
 
 
 def fung_s2(e1, e2=E_Z):
-    """Axial 2nd Piola-Kirchhoff stress (kPa), THEORY §3 / paper eq. (25)."""
+    """Axial 2nd Piola-Kirchhoff stress (kPa), theory manual (3.2) / paper eq. (25)."""
     return 2.0 * C_KPA * (A4 * e1 + A2 * e2) * np.exp(fung_q(e1, e2))
 
 

@@ -7,7 +7,7 @@ Reads RESULT_DIR/history.csv of `tunica run examples/balloon-sphere-3d.yaml -o
 RESULT_DIR` (columns pressure_kPa, volume_mm3), takes lambda = (V/V0)^(1/3) from
 the enclosed volume of the faceted octant, and writes OUT_DIR/balloon-sphere-3d.png:
 the FE points over the thin neo-Hookean sphere's closed form
-p = 2 mu (H/R)(1/lambda - 1/lambda^7) (THEORY §7, evaluated here), through the
+p = 2 mu (H/R)(1/lambda - 1/lambda^7) (theory manual (8.3), evaluated here), through the
 pressure maximum at lambda = 7^(1/6). Prints the largest relative error.
 """
 
