@@ -37,7 +37,7 @@
 #include "fit/thin_tube.hpp"
 #include "io/deck.hpp"
 #include "solver/analysis.hpp"
-#include "solver/linear_solver.hpp"
+#include "linalg/linear_solver.hpp"
 #include "../tests/support/fung_tube.hpp"
 #include "../tests/support/sphere_octant.hpp"
 

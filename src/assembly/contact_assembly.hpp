@@ -28,7 +28,7 @@
 #include <array>
 #include <vector>
 
-#include "assembly/sparse_matrix.hpp"
+#include "linalg/sparse_matrix.hpp"
 #include "contact/axisym_contact.hpp"
 #include "model/model.hpp"
 

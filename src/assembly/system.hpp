@@ -26,7 +26,7 @@
 
 #include "assembly/contact_assembly.hpp"
 #include "assembly/references.hpp"
-#include "assembly/sparse_matrix.hpp"
+#include "linalg/sparse_matrix.hpp"
 #include "elements/axisym_shell.hpp"
 #include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"

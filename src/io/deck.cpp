@@ -17,6 +17,7 @@
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "mesh/meridian.hpp"
+#include "quantities/history_quantity.hpp"
 
 namespace tunica {
 
@@ -96,49 +97,6 @@ const ComponentSpec& load_spec() {
   return s;
 }
 
-const ComponentSpec& solver_spec() {
-  static const ComponentSpec s{
-      "solver", "",
-      "Newton–Raphson and increment control; at the top level for all steps, or inside a step for that step.",
-      {with_default(at_least(integer("max_iterations", "Newton iterations allowed per increment"), 1), "12"),
-       with_default(positive(number("residual_tolerance", Dimension::dimensionless,
-                                    "convergence when ‖R‖ ≤ tol · ‖R₀‖ (R₀: residual at the start of the increment)")),
-                    "1e-9"),
-       with_default(positive(number("energy_tolerance", Dimension::dimensionless,
-                                    "and |Δu_k·R_k| ≤ tol · |Δu₁·R₀| (energy norm of the last correction against the residual it left; it scales as the cube of the correction, so 1e-12 leaves an error near 1e-8 of the increment)")),
-                    "1e-12"),
-       with_default(at_most(at_least(integer("max_cutbacks", "times an increment may be halved and retried"), 0), 30),
-                    "5"),
-       with_default(boolean("line_search", "halve a Newton correction that raises ‖R‖ or inverts an element, up to 8 "
-                                           "times (never under volume control)"),
-                    "true"),
-       with_default(one_of(text("linear_solver",
-                                "sparse direct solver: auto = CHOLMOD when the tangent is symmetric (to 1e-12) and "
-                                "positive definite, else UMFPACK"),
-                           {"auto", "cholmod", "umfpack", "sparse_lu"}),
-                    "auto"),
-       with_default(one_of(text("predictor",
-                                "first iteration of an increment whose prescribed displacements move: tangent = "
-                                "solve K(u_n) Δu = −R(u_n) − K_fp Δu_p at the last converged state (the prescribed "
-                                "increment applied linearly, Newton then as usual); none = start from u_n with the "
-                                "new prescribed values"),
-                           {"tangent", "none"}),
-                    "tangent"),
-       with_default(one_of(text("stress_free_start",
-                                "first correction of an increment that starts at the stress-free reference state "
-                                "under pressure: stiffened = its tangent gets the normal-tension stiffness of the "
-                                "Laplace estimate T0 = |p|/|H| on every pressurized 3-D membrane element (the Newton "
-                                "direction changes, not the solution); exact = the plain tangent"),
-                           {"stiffened", "exact"}),
-                    "stiffened"),
-       with_default(one_of(text("pressure_stiffness",
-                                "follower-pressure load stiffness: exact (consistent, quadratic Newton) or "
-                                "symmetrized, (K + Kᵀ)/2, which CHOLMOD can factorize (ignored under volume control)"),
-                           {"exact", "symmetrized"}),
-                    "exact")}};
-  return s;
-}
-
 const ComponentSpec& step_spec() {
   static const ComponentSpec s{
       "steps", "",
@@ -208,28 +166,20 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
   if (!node.defined()) return base;
   node.expect_map_with_keys([] {
     std::vector<std::string> k;
-    for (const auto& p : solver_spec().params) k.push_back(p.name);
+    for (const auto& p : solver_settings_spec().params) k.push_back(p.name);
     return k;
   }());
   // Keys not given keep the base values: read only the present ones.
   for (const auto& entry : node.entries()) {
     const std::string& key = entry.first;
     const DeckNode& value = entry.second;
-    ComponentSpec one = solver_spec();
+    ComponentSpec one = solver_settings_spec();
     one.params.erase(std::remove_if(one.params.begin(), one.params.end(), [&](const ParamSpec& p) { return p.name != key; }),
                      one.params.end());
     YAML::Node single;
     single[key] = value.yaml();
     const Params p = read_params(DeckNode(single, node.file(), node.path(), node.where()), one, u);
-    if (key == "max_iterations") base.max_iterations = static_cast<int>(p.integer(key));
-    if (key == "residual_tolerance") base.residual_tolerance = p.number(key);
-    if (key == "energy_tolerance") base.energy_tolerance = p.number(key);
-    if (key == "max_cutbacks") base.max_cutbacks = static_cast<int>(p.integer(key));
-    if (key == "linear_solver") base.linear_solver = p.text(key);
-    if (key == "pressure_stiffness") base.symmetrize_pressure_stiffness = p.text(key) == "symmetrized";
-    if (key == "line_search") base.line_search = p.boolean(key);
-    if (key == "predictor") base.tangent_predictor = p.text(key) == "tangent";
-    if (key == "stress_free_start") base.stiffen_stress_free_start = p.text(key) == "stiffened";
+    set_solver_setting(base, key, p);
   }
   return base;
 }
@@ -567,68 +517,59 @@ void read_output(const DeckNode& deck, Model& m) {
     const Params h = read_params(node, history_spec(), m.units);
     HistoryRequest r;
     r.quantity = h.text("quantity");
-    const auto& qs = history_quantities();
-    auto q = std::find_if(qs.begin(), qs.end(), [&](const HistoryQuantity& x) { return x.name == r.quantity; });
-    if (q == qs.end()) {
+    const HistoryQuantity* q = find_history_quantity(r.quantity);
+    if (!q) {
       std::string list;
-      for (const auto& x : qs) list += (list.empty() ? "" : ", ") + x.name;
+      for (const auto& x : history_quantities()) list += (list.empty() ? "" : ", ") + x.name;
       h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")");
     }
     r.dim = q->dim;
-    {
-      const char last = r.quantity.back();
-      const bool node_dof = q->target == "node_set";
-      if (node_dof && m.geometry == Geometry::axisymmetric && (last == 'x' || last == 'y'))
-        h.fail("quantity", "'" + r.quantity + "' is a 3-D quantity; axisymmetric nodes have r and z");
-      if (node_dof && m.geometry == Geometry::three_d && last == 'r')
-        h.fail("quantity", "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
-    }
+    const std::string target = target_key(q->target);
+    if (q->target == QuantityTarget::node_set && q->geometry && *q->geometry != m.geometry)
+      h.fail("quantity", m.geometry == Geometry::axisymmetric
+                             ? "'" + r.quantity + "' is a 3-D quantity; axisymmetric nodes have r and z"
+                             : "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
     for (const char* key : {"part", "node_set", "load", "contact"}) {
-      if (h.has(key) && q->target != key)
-        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, q->target.empty() ? "no set" : "a " + q->target));
+      if (h.has(key) && target != key)
+        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, target.empty() ? "no set" : "a " + target));
     }
-    if (!q->target.empty() && !h.has(q->target))
-      h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, q->target));
-    if (q->target == "part") {
+    if (!target.empty() && !h.has(target))
+      h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, target));
+    if (q->target == QuantityTarget::part) {
       r.part = m.find_part(h.text("part"));
       if (r.part < 0) h.fail("part", "undefined part '" + h.text("part") + "'");
-      const bool cylindrical = r.quantity.rfind("sigma_", 0) == 0 && r.quantity.size() > 7 &&
-                               (r.quantity[6] == 'r' || r.quantity[6] == 't' || r.quantity[6] == 'z');
-      const bool axisym_only = cylindrical || r.quantity == "hydrostatic_pressure" || r.quantity == "volume_ratio";
-      if (axisym_only && m.geometry != Geometry::axisymmetric)
+      if (q->geometry && *q->geometry != m.geometry)
         h.fail("quantity", "'" + r.quantity + "' is a quantity of axisymmetric parts");
-      const bool shell_only = r.quantity.rfind("M_", 0) == 0 || r.quantity.find("_outer") != std::string::npos ||
-                              r.quantity.find("_inner") != std::string::npos;
-      if (shell_only && !m.parts[r.part].is_shell())
+      if (q->shells_only && !m.parts[r.part].is_shell())
         h.fail("quantity", "'" + r.quantity + "' is a quantity of axisymmetric_shell parts; part '" + h.text("part") +
                                "' is an " + m.parts[r.part].element + " part");
-      if (!axisym_only && r.quantity != "radius" && m.parts[r.part].is_solid())
+      if (!q->solid && m.parts[r.part].is_solid()) {
+        std::string list;
+        for (const auto& x : history_quantities())
+          if (x.solid) list += (list.empty() ? "" : ", ") + x.name;
         h.fail("quantity", "'" + r.quantity + "' is a membrane quantity; part '" + h.text("part") +
-                               "' is a solid (its quantities: sigma_rr, sigma_thetatheta, sigma_zz, sigma_rz, "
-                               "hydrostatic_pressure, volume_ratio, radius)");
-    } else if (q->target == "node_set") {
+                               "' is a solid (its quantities: " + list + ")");
+      }
+    } else if (q->target == QuantityTarget::node_set) {
       r.node_set = node_set_ref(h, "node_set", m);
-      if (r.quantity.find("slope_") != std::string::npos)
+      if (q->shells_only)
         for (int n : m.node_sets[r.node_set].nodes)
           if (!m.has_slopes(n))
             h.fail("node_set", fmt::format("'{}' is a quantity of axisymmetric_shell nodes; node {} of '{}' is on no "
                                            "shell part",
                                            r.quantity, n, h.text("node_set")));
-    } else if (q->target == "load") {
+    } else if (q->target == QuantityTarget::load) {
       const std::string& l = h.text("load");
       auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& x) { return x.name == l; });
       if (it == m.loads.end()) h.fail("load", "undefined load '" + l + "'");
       r.load = static_cast<int>(it - m.loads.begin());
-    } else if (q->target == "contact") {
+    } else if (q->target == QuantityTarget::contact) {
       const std::string& c = h.text("contact");
       auto it = std::find_if(m.contacts.begin(), m.contacts.end(), [&](auto& x) { return x.name == c; });
       if (it == m.contacts.end()) h.fail("contact", "undefined contact pair '" + c + "'");
       r.contact = static_cast<int>(it - m.contacts.begin());
     }
-    const bool reaction = r.quantity.rfind("reaction_", 0) == 0;
-    r.reduce = reaction || r.quantity == "contact_force" ? Reduce::sum
-               : r.quantity == "contact_pressure" || r.quantity == "contact_penetration" ? Reduce::max
-                                                        : Reduce::mean;
+    r.reduce = q->reduce;
     if (h.has("reduce")) {
       const std::string& s = h.text("reduce");
       r.reduce = s == "min" ? Reduce::min : s == "max" ? Reduce::max : s == "sum" ? Reduce::sum : Reduce::mean;
@@ -654,78 +595,9 @@ void read_output(const DeckNode& deck, Model& m) {
 
 }  // namespace
 
-const std::vector<HistoryQuantity>& history_quantities() {
-  static const std::vector<HistoryQuantity> q = {
-      {"time", "", Dimension::dimensionless, "analysis time: step number − 1 + fraction of the step done"},
-      {"pressure", "load", Dimension::pressure, "current magnitude of a pressure load"},
-      {"volume", "load", Dimension::volume, "enclosed volume of the load's surface (see `loads`)"},
-      {"lambda_1", "part", Dimension::dimensionless, "stretch in direction 1 (axisymmetric: hoop, λθ = r/R), √C11"},
-      {"lambda_2", "part", Dimension::dimensionless, "stretch in direction 2 (axisymmetric: meridian, λs = ℓ/L), √C22"},
-      {"lambda_3", "part", Dimension::dimensionless, "thickness stretch λ3 = 1/√det C"},
-      {"E_1", "part", Dimension::dimensionless, "Green–Lagrange strain E11 = ½(C11 − 1)"},
-      {"E_2", "part", Dimension::dimensionless, "Green–Lagrange strain E22 = ½(C22 − 1)"},
-      {"E_12", "part", Dimension::dimensionless, "Green–Lagrange shear strain E12 = ½ C12 (0 in axisymmetry)"},
-      {"S_1", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S11"},
-      {"S_2", "part", Dimension::pressure, "2nd Piola–Kirchhoff stress S22"},
-      {"S_12", "part", Dimension::pressure, "2nd Piola–Kirchhoff shear stress S12"},
-      {"sigma_1", "part", Dimension::pressure, "Cauchy stress along the convected direction 1 (no shear: λ1² S11)"},
-      {"sigma_2", "part", Dimension::pressure, "Cauchy stress along the convected direction 2 (no shear: λ2² S22)"},
-      {"sigma_max", "part", Dimension::pressure, "maximum in-plane principal Cauchy stress"},
-      {"sigma_min", "part", Dimension::pressure, "minimum in-plane principal Cauchy stress"},
-      {"thickness", "part", Dimension::length, "current thickness h = λ3 H"},
-      {"radius", "part", Dimension::length, "current distance of the Gauss points from the z axis"},
-      {"M_1", "part", Dimension::force,
-       "axisymmetric shells: hoop bending moment per unit length ∫σ_θ η dη (positive: the side of n in tension)"},
-      {"M_2", "part", Dimension::force, "axisymmetric shells: meridional bending moment per unit length ∫σ_s η dη"},
-      {"sigma_1_outer", "part", Dimension::pressure,
-       "axisymmetric shells: hoop stress on the outer surface (side n), N/h + 6M/h² (σ_1 is N/h on shells)"},
-      {"sigma_1_inner", "part", Dimension::pressure, "axisymmetric shells: hoop stress on the inner surface, N/h − 6M/h²"},
-      {"sigma_2_outer", "part", Dimension::pressure, "axisymmetric shells: meridional stress on the outer surface, N/h + 6M/h²"},
-      {"sigma_2_inner", "part", Dimension::pressure, "axisymmetric shells: meridional stress on the inner surface, N/h − 6M/h²"},
-      {"sigma_rr", "part", Dimension::pressure,
-       "axisymmetric parts: Cauchy stress σ_rr in cylindrical axes (membranes: of σ = σ_ss t⊗t + σ_θθ e_θ⊗e_θ, t the "
-       "meridian tangent)"},
-      {"sigma_thetatheta", "part", Dimension::pressure, "axisymmetric parts: hoop Cauchy stress σ_θθ"},
-      {"sigma_zz", "part", Dimension::pressure, "axisymmetric parts: axial Cauchy stress σ_zz (a tube's meridional stress)"},
-      {"sigma_rz", "part", Dimension::pressure, "axisymmetric parts: Cauchy shear stress σ_rz"},
-      {"hydrostatic_pressure", "part", Dimension::pressure,
-       "axisymmetric parts: hydrostatic pressure −tr σ/3 (positive in compression; mean-dilatation solids: −U'(θ), constant per element)"},
-      {"volume_ratio", "part", Dimension::dimensionless, "axisymmetric parts: J = det F (1 for the incompressible membranes)"},
-      {"position_r", "node_set", Dimension::length, "axisymmetric: current r of the nodes"},
-      {"position_x", "node_set", Dimension::length, "3-D: current x of the nodes"},
-      {"position_y", "node_set", Dimension::length, "3-D: current y of the nodes"},
-      {"position_z", "node_set", Dimension::length, "current z of the nodes"},
-      {"displacement_r", "node_set", Dimension::length, "axisymmetric: displacement u_r of the nodes"},
-      {"displacement_x", "node_set", Dimension::length, "3-D: displacement u_x of the nodes"},
-      {"displacement_y", "node_set", Dimension::length, "3-D: displacement u_y of the nodes"},
-      {"displacement_z", "node_set", Dimension::length, "displacement u_z of the nodes"},
-      {"reaction_r", "node_set", Dimension::force, "axisymmetric: reaction on prescribed r DOFs (whole circumference)"},
-      {"reaction_x", "node_set", Dimension::force, "3-D: reaction force on prescribed x DOFs"},
-      {"reaction_y", "node_set", Dimension::force, "3-D: reaction force on prescribed y DOFs"},
-      {"reaction_z", "node_set", Dimension::force, "reaction force on prescribed z DOFs (axisymmetric: whole circumference)"},
-      {"slope_r", "node_set", Dimension::dimensionless,
-       "axisymmetric shells: meridian slope r′ = ∂r/∂S of the nodes (S the reference arc length; the r component of "
-       "the unit tangent times the meridional stretch)"},
-      {"slope_z", "node_set", Dimension::dimensionless, "axisymmetric shells: meridian slope z′ = ∂z/∂S of the nodes"},
-      {"reaction_slope_r", "node_set", Dimension::moment,
-       "axisymmetric shells: reaction conjugate to prescribed slope_r DOFs, the clamping moment on the whole "
-       "circumference (a clamped tube end of radius R: 2πR M_s; default reduce: sum)"},
-      {"reaction_slope_z", "node_set", Dimension::moment,
-       "axisymmetric shells: reaction conjugate to prescribed slope_z DOFs (whole circumference; default reduce: sum)"},
-      {"contact_pressure", "contact", Dimension::pressure,
-       "contact pressure at the slave nodes of a contact pair: normal force ε⟨−g_N⟩ A_s over the current tributary "
-       "area (default reduce: max)"},
-      {"contact_force", "contact", Dimension::force,
-       "normal contact force ε⟨−g_N⟩ A_s of the slave nodes, whole circumference (default reduce: sum, the total)"},
-      {"contact_penetration", "contact", Dimension::length,
-       "penetration ⟨−g_N⟩ of the slave nodes (0 off contact; g_N = distance − offset; default reduce: max)"},
-  };
-  return q;
-}
-
 std::vector<ComponentSpec> deck_sections() {
   return {units_spec(),     part_spec(),   solid_part_spec(), shell_part_spec(), frame_spec(),   node_set_spec(), boundary_spec(),
-          load_spec(),      cylinder_spec(), polyline_spec(), contact_spec(), solver_spec(),
+          load_spec(),      cylinder_spec(), polyline_spec(), contact_spec(), solver_settings_spec(),
           step_spec(),      output_spec(), history_spec()};
 }
 

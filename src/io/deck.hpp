@@ -23,13 +23,4 @@ Model read_deck_text(const std::string& text, const std::string& file_name, cons
 /// Declarations of every deck section, in document order, for the reference in docs/.
 std::vector<ComponentSpec> deck_sections();
 
-/// The history quantities: name, what it needs (part, node_set, load), dimension, meaning.
-struct HistoryQuantity {
-  std::string name;
-  std::string target;  ///< "part", "node_set", "load" or ""
-  Dimension dim;
-  std::string doc;
-};
-const std::vector<HistoryQuantity>& history_quantities();
-
 }  // namespace tunica

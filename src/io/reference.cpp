@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "io/deck.hpp"
+#include "quantities/history_quantity.hpp"
 #include "materials/membrane_material.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
@@ -46,7 +47,7 @@ std::string deck_reference_markdown() {
     if (sec.section == "output.history") {
       s += "### History quantities\n\n| quantity | needs | dimension | meaning |\n|---|---|---|---|\n";
       for (const auto& q : history_quantities())
-        s += fmt::format("| `{}` | {} | {} | {} |\n", q.name, q.target.empty() ? "–" : "`" + q.target + "`",
+        s += fmt::format("| `{}` | {} | {} | {} |\n", q.name, q.target == QuantityTarget::none ? "–" : "`" + std::string(target_key(q.target)) + "`",
                          q.dim == Dimension::dimensionless ? "–" : dimension_name(q.dim), q.doc);
       s += "\n";
     }

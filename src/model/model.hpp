@@ -14,6 +14,7 @@
 // node_dof(n, c) for c < node_dof_count(n).
 #include <Eigen/Dense>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -26,6 +27,7 @@
 #include "elements/axisym_solid.hpp"
 #include "materials/membrane_material.hpp"
 #include "materials/solid_material.hpp"
+#include "model/solver_settings.hpp"
 
 namespace tunica {
 
@@ -38,6 +40,13 @@ enum class ElementKind { axisym2, tri3, quad4, solid4, shell2 };
 constexpr int nodes_per_element(ElementKind k) {
   return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2 : k == ElementKind::tri3 ? 3 : 4;
 }
+/// The VTK cell type (vtkCellType.h) of an element as its nodes lie: in the (r, z) plane for the
+/// axisymmetric kinds, in space for the 3-D membranes. std::logic_error for a kind without one.
+std::uint8_t vtk_cell_type(ElementKind k);
+/// The VTK cell type of an axisymmetric element revolved between two hoop angles (a membrane's or
+/// shell's line sweeps a quadrilateral, a solid's quadrilateral a hexahedron); std::logic_error for
+/// the 3-D kinds.
+std::uint8_t vtk_revolved_cell_type(ElementKind k);
 
 /// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
 struct ElementBlock {
@@ -157,24 +166,6 @@ struct VolumeControl {
 };
 
 /// Newton and increment-control settings.
-struct SolverSettings {
-  int max_iterations = 12;
-  double residual_tolerance = 1e-9;  ///< on ‖R‖/‖R₀‖
-  double energy_tolerance = 1e-12;   ///< on |Δu·R| relative to the first iteration
-  int max_cutbacks = 5;
-  bool line_search = true;           ///< halve a correction that raises ‖R‖ (up to 8 times)
-  std::string linear_solver = "auto";  ///< solver/linear_solver.hpp
-  /// The follower-pressure load stiffness as derived (exact, quadratic Newton) or
-  /// symmetrized, K ← (K + Kᵀ)/2, so that CHOLMOD can factorize it.
-  bool symmetrize_pressure_stiffness = false;
-  /// When prescribed displacements move: the first iteration linearizes their increment at the
-  /// last converged state (solver/newton.hpp) instead of starting from it with the new values.
-  bool tangent_predictor = true;
-  /// The first correction of an increment that starts at the stress-free reference state adds the
-  /// normal-tension stiffness of a Laplace tension estimate to its tangent (solver/newton.hpp).
-  bool stiffen_stress_free_start = true;
-};
-
 struct Step {
   std::string name;
   int increments = 1;

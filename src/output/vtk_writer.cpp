@@ -298,7 +298,7 @@ std::string meridian_vtu(const Analysis& a, VtkFormat format) {
       for (int e = 0; e < b.size(); ++e) {
         conn.insert(conn.end(), b.element(e), b.element(e) + nen);
         offsets.push_back(static_cast<std::int64_t>(conn.size()));
-        types.push_back(nen == 2 ? 3 /*VTK_LINE*/ : 9 /*VTK_QUAD*/);
+        types.push_back(vtk_cell_type(b.kind));
       }
     }
   return grid(pts, conn, offsets, types, disp, cell_fields(a), 1, format, FieldFilter(m), contact_point_fields(a));
@@ -322,22 +322,23 @@ std::string surface_vtu(const Analysis& a, int segments, VtkFormat format) {
   std::vector<std::int64_t> conn, offsets;
   std::vector<std::uint8_t> types;
   for (const auto& p : m.parts)
-    for (const auto& b : p.blocks)
+    for (const auto& b : p.blocks) {
+      const std::uint8_t type = vtk_revolved_cell_type(b.kind);
       for (int el = 0; el < b.size(); ++el) {
         const int* e = b.element(el);
         for (int j = 0; j < segments; ++j) {
           const int k = (j + 1) % segments;
-          if (b.kind == ElementKind::solid4) {
+          if (type == 12 /*VTK_HEXAHEDRON*/) {
             for (int hoop : {k, j})
               for (int q = 0; q < 4; ++q) conn.push_back(static_cast<std::int64_t>(e[q]) * segments + hoop);
-            types.push_back(12 /*VTK_HEXAHEDRON*/);
           } else {
             conn.insert(conn.end(), {e[0] * segments + j, e[1] * segments + j, e[1] * segments + k, e[0] * segments + k});
-            types.push_back(9 /*VTK_QUAD*/);
           }
+          types.push_back(type);
           offsets.push_back(static_cast<std::int64_t>(conn.size()));
         }
       }
+    }
   return grid(pts, conn, offsets, types, disp, cell_fields(a), segments, format, FieldFilter(m), contact_point_fields(a));
 }
 
@@ -360,7 +361,7 @@ std::string surface3d_vtu(const Analysis& a, VtkFormat format) {
       for (int e = 0; e < b.size(); ++e) {
         conn.insert(conn.end(), b.element(e), b.element(e) + nen);
         offsets.push_back(static_cast<std::int64_t>(conn.size()));
-        types.push_back(nen == 3 ? 5 /*VTK_TRIANGLE*/ : 9 /*VTK_QUAD*/);
+        types.push_back(vtk_cell_type(b.kind));
       }
     }
   return grid(pts, conn, offsets, types, disp, surface_cell_fields(a), 1, format, FieldFilter(m));

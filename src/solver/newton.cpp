@@ -1,6 +1,6 @@
 #include "solver/newton.hpp"
 
-#include "solver/matrix_symmetry.hpp"
+#include "linalg/matrix_symmetry.hpp"
 
 #include <fmt/format.h>
 
@@ -146,9 +146,6 @@ bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::V
 NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                     const SolverSettings& settings, const std::function<void(const IterationRecord&)>& on_iteration,
                     const VolumeConstraint* constraint, const Eigen::VectorXd* converged) {
-  constexpr double kRoundoff = 1e-14;  // ‖R‖ below this fraction of the cancelling forces is round-off
-  constexpr double kDivergence = 1e8;  // ‖R‖ above this multiple of ‖R₀‖ is divergence
-  constexpr int kMaxBacktracks = 8;    // line search: at most 8 halvings (1/256 of the correction)
   NewtonResult result;
   const int nf = system.num_free();
   Eigen::VectorXd R, Rf(nf);
@@ -187,7 +184,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
     const auto t0 = std::chrono::steady_clock::now();
     // Backtracking line search (theory manual (7.4)): a correction that raises ‖R‖, makes it
     // non-finite or leaves the admissible states (an inverted element) is halved, up to
-    // kMaxBacktracks times. The full Newton step is always tried first, so quadratic convergence
+    // settings.line_search_halvings times. The full Newton step is always tried first, so quadratic convergence
     // is untouched near a solution.
     std::string inadmissible;
     for (;;) {
@@ -208,7 +205,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
                             std::abs(du.head(nf).dot(Rf)) <= 0.5 * std::abs(slope0);
       const bool worse = !inadmissible.empty() || !std::isfinite(rec.residual) ||
                          (rec.residual > previous_residual && !slope_ok);
-      if (k == 0 || !worse || constraint || !settings.line_search || rec.backtracks == kMaxBacktracks) break;
+      if (k == 0 || !worse || constraint || !settings.line_search || rec.backtracks == settings.line_search_halvings) break;
       ++rec.backtracks;
       for (int i = 0; i < system.num_dofs(); ++i)
         if (system.equation(i) >= 0) u(i) -= 0.5 * du(system.equation(i));  // back to half the correction taken so far
@@ -244,7 +241,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       return result;
     }
     const bool volume_ok = !constraint || std::abs(c) <= settings.residual_tolerance * std::abs(constraint->target);
-    const bool at_roundoff = rec.residual <= kRoundoff * scale && volume_ok;
+    const bool at_roundoff = rec.residual <= settings.roundoff_tolerance * scale && volume_ok;
     const bool tests = k > 0 && rec.residual <= settings.residual_tolerance * r0 &&
                        (e1 == 0 || energy <= settings.energy_tolerance * e1) && volume_ok;
     if (at_roundoff || tests) {
@@ -252,7 +249,7 @@ NewtonResult newton(const System& system, LinearSolver& solver, LoadState& loads
       result.converged = true;
       return result;
     }
-    if (k > 0 && rec.residual > kDivergence * r0) {
+    if (k > 0 && rec.residual > settings.divergence_ratio * r0) {
       on_iteration(rec);
       result.failure = "diverging";
       return result;

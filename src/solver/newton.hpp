@@ -6,7 +6,7 @@
 
 #include "assembly/system.hpp"
 #include "model/model.hpp"
-#include "solver/linear_solver.hpp"
+#include "linalg/linear_solver.hpp"
 
 namespace tunica {
 
@@ -57,7 +57,7 @@ bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::V
 
 /// Iterates on u (prescribed DOFs already set; theory manual (7.1)) until the convergence tests
 /// of `settings` hold, (7.2): ‖R‖ ≤ tol_r ‖R₀‖ and |Δu·R| ≤ tol_e |Δu₁·R₀|, or ‖R‖ at
-/// round-off (≤ 1e-14 of the force scale of System::assemble). On failure u is left as it was last.
+/// round-off (≤ settings.roundoff_tolerance of the force scale of System::assemble). On failure u is left as it was last.
 /// With a volume constraint the pressure loads.pressure[constraint->load] is a further
 /// unknown: the bordered system (7.5) [K −g; ∂V/∂uᵀ 0] [Δu; Δp] = −[R; V − target]
 /// (g = ∂f_ext/∂p) is solved as one sparse matrix, which stays regular at a

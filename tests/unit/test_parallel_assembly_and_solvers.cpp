@@ -11,8 +11,8 @@
 
 #include "io/deck.hpp"
 #include "solver/analysis.hpp"
-#include "solver/linear_solver.hpp"
-#include "solver/matrix_symmetry.hpp"
+#include "linalg/linear_solver.hpp"
+#include "linalg/matrix_symmetry.hpp"
 
 namespace tunica {
 namespace {

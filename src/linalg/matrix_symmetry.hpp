@@ -8,7 +8,7 @@
 // it is measured, not assumed.
 #include <vector>
 
-#include "assembly/system.hpp"
+#include "linalg/sparse_matrix.hpp"
 
 namespace tunica {
 

@@ -1,4 +1,4 @@
-#include "solver/linear_solver.hpp"
+#include "linalg/linear_solver.hpp"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseLU>
@@ -6,7 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "solver/matrix_symmetry.hpp"
+#include "linalg/matrix_symmetry.hpp"
 
 namespace tunica {
 
@@ -62,14 +62,16 @@ private:
   LinearSolver* active_ = nullptr;
 };
 
-}  // namespace
+const bool registered = register_linear_solver(
+                            {"auto", "CHOLMOD when the tangent is symmetric (to 1e-12) and positive definite, else UMFPACK",
+                             [] { return std::make_unique<AutoSolver>(); }}) &&
+                        register_linear_solver({"cholmod", "SuiteSparse CHOLMOD, supernodal LLᵀ: symmetric positive definite tangents",
+                                                [] { return std::make_unique<Cholmod>("cholmod"); }}) &&
+                        register_linear_solver({"umfpack", "SuiteSparse UMFPACK, unsymmetric multifrontal LU: any regular tangent",
+                                                [] { return std::make_unique<Umfpack>("umfpack"); }}) &&
+                        register_linear_solver({"sparse_lu", "Eigen's supernodal LU (COLAMD ordering)",
+                                                [] { return std::make_unique<SparseLU>("sparse_lu"); }});
 
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
-  if (name == "auto") return std::make_unique<AutoSolver>();
-  if (name == "cholmod") return std::make_unique<Cholmod>("cholmod");
-  if (name == "umfpack") return std::make_unique<Umfpack>("umfpack");
-  if (name == "sparse_lu") return std::make_unique<SparseLU>("sparse_lu");
-  throw std::invalid_argument("unknown linear solver '" + name + "'");
-}
+}  // namespace
 
 }  // namespace tunica

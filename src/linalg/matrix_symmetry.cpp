@@ -1,4 +1,4 @@
-#include "solver/matrix_symmetry.hpp"
+#include "linalg/matrix_symmetry.hpp"
 
 #include <algorithm>
 #include <cmath>

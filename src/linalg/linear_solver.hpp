@@ -1,6 +1,8 @@
 #pragma once
-// Sparse direct solvers behind one interface. The symbolic analysis is done
-// once per pattern and reused by every numeric factorization.
+// Sparse direct solvers behind one interface, registered by name (the deck's
+// `solver.linear_solver` takes its choices from the registry). The symbolic analysis is
+// done once per pattern and reused by every numeric factorization. Registered
+// (linalg/linear_solvers.cpp):
 //
 //   cholmod    SuiteSparse CHOLMOD, supernodal LLᵀ of the lower triangle: for
 //              symmetric positive definite tangents (a hyperelastic membrane
@@ -13,10 +15,13 @@
 //   auto       per factorization: CHOLMOD if K is symmetric to round-off
 //              (max |K_ij − K_ji| ≤ 1e-12 max |K_ij|) and positive definite,
 //              otherwise UMFPACK.
+#include <Eigen/Dense>
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
-#include "assembly/system.hpp"
+#include "linalg/sparse_matrix.hpp"
 
 namespace tunica {
 
@@ -32,7 +37,22 @@ public:
   virtual const char* used() const = 0;
 };
 
-/// "auto", "cholmod", "umfpack" or "sparse_lu".
+/// A linear solver a deck can name.
+struct LinearSolverType {
+  std::string name;
+  std::string doc;  ///< one line for the deck reference
+  std::function<std::unique_ptr<LinearSolver>()> make;
+};
+
+/// Adds a solver to the registry (at static initialization: a `static const bool` initialized
+/// by register_linear_solver in the solver's own .cpp). Throws std::logic_error on a name
+/// registered twice.
+bool register_linear_solver(LinearSolverType type);
+/// The registered solvers, by name.
+std::vector<std::string> linear_solver_names();
+/// One line per solver ("`name`: doc"), for the deck reference.
+std::string linear_solver_docs();
+/// A new solver of a registered name; std::invalid_argument for an unknown name.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name);
 
 /// Relative tolerance of the symmetry test of "auto".

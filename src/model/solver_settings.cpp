@@ -1,0 +1,97 @@
+#include "model/solver_settings.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "linalg/linear_solver.hpp"
+
+namespace tunica {
+
+namespace {
+
+/// A default as a deck would write it: 1e-09 → 1e-9, 1e+08 → 1e8.
+std::string deck_number(double v) {
+  std::string s = fmt::format("{:g}", v);
+  for (const char* from : {"e-0", "e+0"}) {
+    const auto at = s.find(from);
+    if (at != std::string::npos) s.replace(at, 3, from[1] == '-' ? "e-" : "e");
+  }
+  return s;
+}
+std::string deck_bool(bool b) { return b ? "true" : "false"; }
+
+}  // namespace
+
+const ComponentSpec& solver_settings_spec() {
+  static const ComponentSpec spec = [] {
+    const SolverSettings d;
+    return ComponentSpec{
+        "solver", "",
+        "Newton–Raphson and increment control; at the top level for all steps, or inside a step for that step.",
+        {with_default(at_least(integer("max_iterations", "Newton iterations allowed per increment"), 1),
+                      std::to_string(d.max_iterations)),
+         with_default(positive(number("residual_tolerance", Dimension::dimensionless,
+                                      "convergence when ‖R‖ ≤ tol · ‖R₀‖ (R₀: residual at the start of the increment)")),
+                      deck_number(d.residual_tolerance)),
+         with_default(positive(number("energy_tolerance", Dimension::dimensionless,
+                                      "and |Δu_k·R_k| ≤ tol · |Δu₁·R₀| (energy norm of the last correction against the residual it left; it scales as the cube of the correction, so 1e-12 leaves an error near 1e-8 of the increment)")),
+                      deck_number(d.energy_tolerance)),
+         with_default(at_most(positive(number("roundoff_tolerance", Dimension::dimensionless,
+                                              "converged as well when ‖R‖ ≤ tol × the forces that cancel in R (the "
+                                              "residual is then round-off, whatever ‖R₀‖ was)")),
+                              1e-6),
+                      deck_number(d.roundoff_tolerance)),
+         with_default(at_least(number("divergence_ratio", Dimension::dimensionless,
+                                      "an attempt stops as diverging when ‖R‖ exceeds this multiple of ‖R₀‖ (and is cut back)"),
+                               1.0),
+                      deck_number(d.divergence_ratio)),
+         with_default(at_most(at_least(integer("max_cutbacks", "times an increment may be halved and retried"), 0), 30),
+                      std::to_string(d.max_cutbacks)),
+         with_default(boolean("line_search", "halve a Newton correction that raises ‖R‖ or inverts an element, up to "
+                                             "`line_search_halvings` times (never under volume control)"),
+                      deck_bool(d.line_search)),
+         with_default(at_most(at_least(integer("line_search_halvings", "most halvings of one Newton correction by the line search"), 1), 50),
+                      std::to_string(d.line_search_halvings)),
+         with_default(one_of(text("linear_solver", "sparse direct solver: " + linear_solver_docs()), linear_solver_names()),
+                      d.linear_solver),
+         with_default(one_of(text("predictor",
+                                  "first iteration of an increment whose prescribed displacements move: tangent = "
+                                  "solve K(u_n) Δu = −R(u_n) − K_fp Δu_p at the last converged state (the prescribed "
+                                  "increment applied linearly, Newton then as usual); none = start from u_n with the "
+                                  "new prescribed values"),
+                             {"tangent", "none"}),
+                      d.tangent_predictor ? "tangent" : "none"),
+         with_default(one_of(text("stress_free_start",
+                                  "first correction of an increment that starts at the stress-free reference state "
+                                  "under pressure: stiffened = its tangent gets the normal-tension stiffness of the "
+                                  "Laplace estimate T0 = |p|/|H| on every pressurized 3-D membrane element (the Newton "
+                                  "direction changes, not the solution); exact = the plain tangent"),
+                             {"stiffened", "exact"}),
+                      d.stiffen_stress_free_start ? "stiffened" : "exact"),
+         with_default(one_of(text("pressure_stiffness",
+                                  "follower-pressure load stiffness: exact (consistent, quadratic Newton) or "
+                                  "symmetrized, (K + Kᵀ)/2, which CHOLMOD can factorize (ignored under volume control)"),
+                             {"exact", "symmetrized"}),
+                      d.symmetrize_pressure_stiffness ? "symmetrized" : "exact")}};
+  }();
+  return spec;
+}
+
+void set_solver_setting(SolverSettings& s, const std::string& key, const Params& p) {
+  if (key == "max_iterations") s.max_iterations = static_cast<int>(p.integer(key));
+  else if (key == "residual_tolerance") s.residual_tolerance = p.number(key);
+  else if (key == "energy_tolerance") s.energy_tolerance = p.number(key);
+  else if (key == "roundoff_tolerance") s.roundoff_tolerance = p.number(key);
+  else if (key == "divergence_ratio") s.divergence_ratio = p.number(key);
+  else if (key == "max_cutbacks") s.max_cutbacks = static_cast<int>(p.integer(key));
+  else if (key == "line_search") s.line_search = p.boolean(key);
+  else if (key == "line_search_halvings") s.line_search_halvings = static_cast<int>(p.integer(key));
+  else if (key == "linear_solver") s.linear_solver = p.text(key);
+  else if (key == "predictor") s.tangent_predictor = p.text(key) == "tangent";
+  else if (key == "stress_free_start") s.stiffen_stress_free_start = p.text(key) == "stiffened";
+  else if (key == "pressure_stiffness") s.symmetrize_pressure_stiffness = p.text(key) == "symmetrized";
+  else throw std::logic_error("solver setting '" + key + "' is not declared");
+}
+
+}  // namespace tunica
