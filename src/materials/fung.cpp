@@ -1,6 +1,7 @@
 #include "materials/fung.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace tunica {
 
@@ -62,7 +63,25 @@ const RegisterMaterial reg_fung(MaterialType{
                "two-dimensional approach; the full matrix [[a1,a4,a6],[a4,a2,a5],[a6,a5,a3]] positive "
                "definite otherwise): W would not be convex");
       return std::make_unique<FungMaterial>(p.number("c"), A, p.number("a7"));
-    }});
+    },
+    {MaterialSample{"rat_aorta",
+                    "the paper's rat abdominal aorta, two-dimensional approach (theory manual §12.1; a4 from "
+                    "the caption of its Fig. 2, §12.3)",
+                    {{"c", "61.163 kPa"}, {"a1", "0.68238"}, {"a2", "0.60558"}, {"a4", "0.1067"}},
+                    // Orthotropic: the hoop and axial directions on and off the element's axes.
+                    {0.0, 35.0 * std::numbers::pi / 180.0, 0.5 * std::numbers::pi}},
+     MaterialSample{"three_d_shear",
+                    "every term of (3.1): the through-thickness coupling a3, a5, a6 (the multiplier of (2.1) "
+                    "is nonzero) and the in-plane shear a7; illustrative constants, A positive definite",
+                    {{"c", "50 kPa"},
+                     {"a1", "1.1"},
+                     {"a2", "0.7"},
+                     {"a3", "0.9"},
+                     {"a4", "0.2"},
+                     {"a5", "0.15"},
+                     {"a6", "-0.1"},
+                     {"a7", "0.8"}},
+                    {0.0, -50.0 * std::numbers::pi / 180.0}}}});
 }  // namespace
 
 }  // namespace tunica

@@ -64,7 +64,18 @@ const RegisterMaterial reg_hgo(MaterialType{
     [](const Params& p) -> std::unique_ptr<MembraneMaterial> {
       return std::make_unique<HgoMaterial>(p.number("mu"), p.number("k1"), p.number("k2"), p.number("beta"),
                                            p.number("kappa"));
-    }});
+    },
+    // Two fibre families at ±β. Orientations put them off the principal axes of the deformation
+    // and of the element (0: the families symmetric about direction 1 of the test).
+    {MaterialSample{"artery_media",
+                    "the media of a rabbit carotid artery, Holzapfel, Gasser & Ogden (2000): μ = c = 3 kPa, "
+                    "no dispersion",
+                    {{"mu", "3 kPa"}, {"k1", "2.3632 kPa"}, {"k2", "0.8393"}, {"beta", "29 deg"}},
+                    {0.0, 20.0 * std::numbers::pi / 180.0, -65.0 * std::numbers::pi / 180.0}},
+     MaterialSample{"aneurysm_wall",
+                    "the stiffened, dispersed wall of examples/aneurysm.yaml (illustrative, not fitted)",
+                    {{"mu", "30 kPa"}, {"k1", "100 kPa"}, {"k2", "5"}, {"beta", "40 deg"}, {"kappa", "0.1"}},
+                    {0.0, 55.0 * std::numbers::pi / 180.0}}}});
 }  // namespace
 
 }  // namespace tunica

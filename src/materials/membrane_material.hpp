@@ -15,7 +15,9 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "materials/material_sample.hpp"
 #include "params/param_spec.hpp"
 #include "params/params.hpp"
 
@@ -55,10 +57,12 @@ struct MembraneResponse {
 /// `C` = (C11, C22, C12) in the material frame; det C must be positive.
 MembraneResponse membrane_response(const MembraneMaterial& material, const Eigen::Vector3d& C);
 
-/// A material type a deck can name: its declared parameters and a factory.
+/// A material type a deck can name: its declared parameters, a factory, and sample parameter
+/// sets (at least one) that the tests run through every membrane and shell element.
 struct MaterialType {
   ComponentSpec spec;
   std::function<std::unique_ptr<MembraneMaterial>(const Params&)> make;
+  std::vector<MaterialSample> samples;
 };
 
 /// All registered material types by deck name.

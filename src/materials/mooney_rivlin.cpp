@@ -39,7 +39,11 @@ const RegisterMaterial reg(MaterialType{
                    required(at_least(number("b2", Dimension::pressure, "I2 coefficient"), 0.0))}},
     [](const Params& p) -> std::unique_ptr<MembraneMaterial> {
       return std::make_unique<MooneyRivlinMaterial>(p.number("b1"), p.number("b2"));
-    }});
+    },
+    {MaterialSample{"angioplasty_balloon",
+                    "the balloon of examples/balloon-angioplasty.yaml (the paper's constants are unreadable, "
+                    "theory manual §12.3)",
+                    {{"b1", "2.0 MPa"}, {"b2", "0.5 MPa"}}}}});
 
 }  // namespace
 }  // namespace tunica

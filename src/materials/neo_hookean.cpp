@@ -27,7 +27,9 @@ const RegisterMaterial reg(MaterialType{
                   {required(positive(number("mu", Dimension::pressure, "shear modulus μ")))}},
     [](const Params& p) -> std::unique_ptr<MembraneMaterial> {
       return std::make_unique<NeoHookeanMaterial>(p.number("mu"));
-    }});
+    },
+    {MaterialSample{"balloon", "the rubber balloon of examples/balloon-sphere.yaml (theory manual §8)",
+                    {{"mu", "1 MPa"}}}}});
 
 }  // namespace
 }  // namespace tunica

@@ -91,7 +91,14 @@ const RegisterMaterial reg_ogden(MaterialType{
         p.fail("mu", fmt::format("Ogden initial shear modulus ½ Σ mu_p alpha_p = {:g} must be positive",
                                  0.5 * shear));
       return std::make_unique<OgdenMaterial>(mu, alpha);
-    }});
+    },
+    // Isotropic: one orientation.
+    {MaterialSample{"treloar_rubber",
+                    "three terms, Ogden's (1972) fit of Treloar's rubber data (one term with μ_p α_p < 0)",
+                    {{"mu", "[0.63 MPa, 0.0012 MPa, -0.01 MPa]"}, {"alpha", "[1.3, 5.0, -2.0]"}}},
+     MaterialSample{"stiffening_soft_tissue",
+                    "one term with a large exponent, strongly stiffening like soft tissue (illustrative)",
+                    {{"mu", "[20 kPa]"}, {"alpha", "[9]"}}}}});
 }  // namespace
 
 }  // namespace tunica

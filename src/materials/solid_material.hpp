@@ -24,7 +24,9 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "materials/material_sample.hpp"
 #include "params/param_spec.hpp"
 #include "params/params.hpp"
 
@@ -82,10 +84,12 @@ struct SolidResponse {
 };
 SolidResponse solid_response(const SolidMaterial& material, const Eigen::Matrix3d& C);
 
-/// A solid material type a deck can name: its declared parameters and a factory.
+/// A solid material type a deck can name: its declared parameters, a factory, and sample
+/// parameter sets (at least one) that the tests run through the solid element.
 struct SolidMaterialType {
   ComponentSpec spec;
   std::function<std::unique_ptr<SolidMaterial>(const Params&)> make;
+  std::vector<MaterialSample> samples;
 };
 
 /// All registered solid material types by deck name (separate from the membrane materials).

@@ -63,7 +63,12 @@ const RegisterSolidMaterial reg(SolidMaterialType{
                    required(positive(number("kappa", Dimension::pressure, "bulk modulus κ")))}},
     [](const Params& p) -> std::unique_ptr<SolidMaterial> {
       return std::make_unique<SolidNeoHookean>(p.number("mu"), p.number("kappa"));
-    }});
+    },
+    {MaterialSample{"plaque", "the plaque of the paper's angioplasty example, κ/μ ≈ 1.45 (theory manual §12.2)",
+                    {{"mu", "500 kPa"}, {"kappa", "724.6 kPa"}}},
+     MaterialSample{"nearly_incompressible",
+                    "a soft tissue with Poisson's ratio 0.495 (κ/μ = 100): the volumetric part dominates",
+                    {{"mu", "50 kPa"}, {"kappa", "5 MPa"}}}}});
 
 }  // namespace
 }  // namespace tunica

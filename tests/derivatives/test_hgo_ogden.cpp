@@ -1,11 +1,11 @@
-// Finite-difference and closed-form checks of the Holzapfel–Gasser–Ogden and
-// Ogden materials:
-//  - the material's own derivatives of W(C11, C22, C12, C33) at random general
-//    (sheared, arbitrary C33) states, HGO with both fibre families in tension,
-//    one in compression, with and without dispersion; Ogden with 1 and 3 terms;
-//  - Ogden at equal and nearly equal in-plane eigenvalues (the spectral
-//    divided difference and its Taylor limit) and across the switch between them;
-//  - the plane-stress incompressible reduction (S, D) against finite differences;
+// Checks of the Holzapfel–Gasser–Ogden and Ogden materials beyond those every registered
+// material gets (test_material_derivatives.cpp runs the finite-difference checks of W, S and D
+// over every sample of the registry):
+//  - HGO: the derivatives of W(C11, C22, C12, C33) by central differences with both fibre
+//    families in tension, exactly one, and neither, for every HGO sample of the registry;
+//    a family in compression contributes nothing; closed-form stresses;
+//  - Ogden at equal and nearly equal in-plane eigenvalues (the spectral divided difference and
+//    its Taylor limit) and across the switch between them, for every Ogden sample;
 //  - equivalences with neo-Hookean and Mooney–Rivlin, and closed-form stresses;
 //  - both in the balloon example (a sphere: equal in-plane stretches everywhere)
 //    against the closed-form pressure–stretch curve p = 2 (H/R) σ(λ)/λ³.
@@ -19,7 +19,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/fd.hpp"
-#include "../support/material_from_yaml.hpp"
+#include "../support/material_registry.hpp"
 #include "materials/hgo.hpp"
 #include "materials/membrane_material.hpp"
 #include "materials/ogden.hpp"
@@ -32,11 +32,15 @@ using tunica::test::relative_error;
 
 namespace {
 
-// Holzapfel et al. (2000) media constants (μ = c); β = 29 deg.
-const std::string kHgo = "{type: hgo, mu: 3 kPa, k1: 2.3632 kPa, k2: 0.8393, beta: 29 deg}";
-const std::string kHgoDispersed = "{type: hgo, mu: 3 kPa, k1: 2.3632 kPa, k2: 0.8393, beta: 29 deg, kappa: 0.2}";
-const std::string kOgden1 = "{type: ogden, mu: [0.5 MPa], alpha: [3.2]}";
-// Ogden's classical rubber constants.
+/// The registry's samples of a material type: (label, deck text).
+std::vector<std::pair<std::string, std::string>> samples(const std::string& type) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const MaterialSample& s : material_types().at(type).samples)
+    out.emplace_back(type + " " + s.name, tunica::test::sample_yaml(type, s));
+  return out;
+}
+
+// Ogden's classical rubber constants, for the closed forms below.
 const std::string kOgden3 = "{type: ogden, mu: [0.63 MPa, 0.0012 MPa, -0.01 MPa], alpha: [1.3, 5.0, -2.0]}";
 
 /// Random in-plane C = FᵀF with stretches in [0.7, 1.5] and shear (as in test_material_derivatives).
@@ -91,25 +95,6 @@ void check_energy_derivatives(const MembraneMaterial& m, const Eigen::Vector4d& 
   max.d2W = std::max(max.d2W, e2);
 }
 
-/// S against the reduced energy Ŵ(C) = W(C, 1/det C) and D against S (pattern of test_material_derivatives).
-void check_membrane_response(const MembraneMaterial& m, const Eigen::Vector3d& C, const std::string& label,
-                             MaxError& max) {
-  const MembraneResponse r = membrane_response(m, C);
-  const auto What = [&](const Eigen::VectorXd& x) { return membrane_response(m, x).W; };
-  const Eigen::VectorXd g = fd_gradient(What, C, 1e-6);
-  const double e1 = relative_error(r.S, Eigen::Vector3d(2 * g(0), 2 * g(1), g(2)), 1e-8);
-  const auto S = [&](const Eigen::VectorXd& x) -> Eigen::VectorXd { return membrane_response(m, x).S; };
-  Eigen::MatrixXd J = fd_jacobian(S, C, 1e-6);
-  J.col(0) *= 2.0;  // dE = (dC11/2, dC22/2, dC12)
-  J.col(1) *= 2.0;
-  const double e2 = relative_error(r.D, J, 1e-8);
-  EXPECT_LT(e1, 1e-6) << label << " at C = " << C.transpose();
-  EXPECT_LT(e2, 1e-6) << label << " at C = " << C.transpose();
-  EXPECT_LT(relative_error(r.D, r.D.transpose(), 1e-8), 1e-12) << label << ": tangent must be symmetric";
-  max.dW = std::max(max.dW, e1);
-  max.d2W = std::max(max.d2W, e2);
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -117,7 +102,8 @@ void check_membrane_response(const MembraneMaterial& m, const Eigen::Vector3d& C
 
 TEST(HgoDerivatives, EnergyGradientAndHessianMatchFiniteDifferences) {
   std::mt19937 rng(11);
-  for (const auto& [label, yaml] : {std::pair{"hgo kappa = 0", kHgo}, std::pair{"hgo kappa = 0.2", kHgoDispersed}}) {
+  ASSERT_FALSE(samples("hgo").empty());
+  for (const auto& [label, yaml] : samples("hgo")) {
     const auto m = material_from_yaml(yaml);
     // Both families in tension, exactly one, and neither (ground matrix alone).
     for (int wanted : {2, 1, 0}) {
@@ -150,24 +136,6 @@ TEST(HgoDerivatives, OneFamilyInCompressionContributesNothing) {
   EXPECT_NEAR(full.W - ground.W, 0.5 * k1 / k2 * (x - 1.0), 1e-16);
   EXPECT_LT((full.dW - ground.dW - k1 * e * x * a).norm(), 1e-16);
   EXPECT_LT((full.d2W - k1 * (1 + 2 * k2 * e * e) * x * a * a.transpose()).norm(), 1e-16);
-}
-
-TEST(HgoDerivatives, StressIsTheDerivativeOfTheReducedEnergyAndTangentOfStress) {
-  std::mt19937 rng(12);
-  for (const auto& [label, yaml] : {std::pair{"hgo kappa = 0", kHgo}, std::pair{"hgo kappa = 0.2", kHgoDispersed}}) {
-    const auto m = material_from_yaml(yaml);
-    MaxError max;
-    int found = 0;
-    for (int tries = 0; found < 20 && tries < 100000; ++tries) {
-      const Eigen::Vector3d C = random_C(rng);
-      const Eigen::Vector4d v(C(0), C(1), C(2), 1.0 / (C(0) * C(1) - C(2) * C(2)));
-      if (fibres_in_tension(*m, v, 1e-3) < 1) continue;  // at least one family active, away from the kink
-      ++found;
-      check_membrane_response(*m, C, label, max);
-    }
-    EXPECT_EQ(found, 20);
-    max.print(std::string(label) + " membrane_response (S, D)");
-  }
 }
 
 TEST(HgoDerivatives, WithoutFibreStiffnessItIsNeoHookean) {
@@ -221,31 +189,12 @@ TEST(HgoDerivatives, EquibiaxialStressWithDispersionMatchesTheClosedForm) {
 // ---------------------------------------------------------------------------------------------
 // Ogden
 
-TEST(OgdenDerivatives, EnergyGradientAndHessianMatchFiniteDifferences) {
-  std::mt19937 rng(21);
-  for (const auto& [label, yaml] : {std::pair{"ogden 1 term", kOgden1}, std::pair{"ogden 3 terms (rubber)", kOgden3}}) {
-    const auto m = material_from_yaml(yaml);
-    MaxError max;
-    for (int k = 0; k < 30; ++k) check_energy_derivatives(*m, random_v(rng), label, max);
-    max.print(label);
-  }
-}
-
-TEST(OgdenDerivatives, StressIsTheDerivativeOfTheReducedEnergyAndTangentOfStress) {
-  std::mt19937 rng(22);
-  for (const auto& [label, yaml] : {std::pair{"ogden 1 term", kOgden1}, std::pair{"ogden 3 terms (rubber)", kOgden3}}) {
-    const auto m = material_from_yaml(yaml);
-    MaxError max;
-    for (int k = 0; k < 20; ++k) check_membrane_response(*m, random_C(rng), label, max);
-    max.print(std::string(label) + " membrane_response (S, D)");
-  }
-}
-
 TEST(OgdenDerivatives, EqualAndNearlyEqualInPlaneStretches) {
   // Equal eigenvalues: C11 = C22, C12 = 0 (undeformed, equibiaxial, sphere), then gaps of 1e-9 and 1e-6,
   // in C11 − C22 and in C12. W is analytic in v there; with h = 1e-6 the central differences are
   // accurate to ~1e-10, so the tolerance (1e-8) is tighter than for the random states.
-  for (const auto& [label, yaml] : {std::pair{"ogden 1 term", kOgden1}, std::pair{"ogden 3 terms (rubber)", kOgden3}}) {
+  ASSERT_FALSE(samples("ogden").empty());
+  for (const auto& [label, yaml] : samples("ogden")) {
     const auto m = material_from_yaml(yaml);
     const auto& og = dynamic_cast<const OgdenMaterial&>(*m);
     MaxError max;
@@ -277,30 +226,32 @@ TEST(OgdenDerivatives, EqualAndNearlyEqualInPlaneStretches) {
 TEST(OgdenDerivatives, ContinuousAcrossTheSwitchToTheTaylorLimit) {
   // Just below and just above the relative gap where the divided difference (g'(c1) − g'(c2))/(c1 − c2)
   // takes over from its Taylor series: the Hessians agree to rounding, and with a central difference.
-  const auto m = material_from_yaml(kOgden3);
   const double gap = OgdenMaterial::kEqualEigenvalueGap;
   double jump = 0;
-  for (double mean : {0.9, 1.0, 1.7}) {
-    for (double shear_share : {0.0, 0.6, 1.0}) {
-      // r = √(d² + C12²) = gap · m · rel, split between C11 − C22 and C12.
-      const auto at = [&](double rel) {
-        const double r = gap * mean * rel;
-        const double d = r * std::sqrt(1 - shear_share * shear_share), c12 = r * shear_share;
-        return Eigen::Vector4d(mean + d, mean - d, c12, 1.1);
-      };
-      // Relative distance 1e-10 from the switch: W's own variation between the two is ~1e-13.
-      const Eigen::Vector4d vb = at(1 - 1e-10), va = at(1 + 1e-10);
-      const auto side = [&](const Eigen::Vector4d& v) {  // the material's own test, r > gap m
-        return std::hypot(0.5 * (v(0) - v(1)), v(2)) > gap * 0.5 * (v(0) + v(1));
-      };
-      ASSERT_FALSE(side(vb));
-      ASSERT_TRUE(side(va));
-      const EnergyDerivatives below = m->energy(vb), above = m->energy(va);
-      EXPECT_LT(relative_error(below.d2W, above.d2W), 5e-12) << "mean " << mean << " shear " << shear_share;
-      EXPECT_LT(relative_error(below.dW, above.dW), 5e-12);
-      jump = std::max(jump, relative_error(below.d2W, above.d2W));
-      MaxError max;
-      check_energy_derivatives(*m, at(1.0), "ogden at the switch", max, 1e-6, 1e-8);
+  for (const auto& [label, yaml] : samples("ogden")) {
+    const auto m = material_from_yaml(yaml);
+    for (double mean : {0.9, 1.0, 1.7}) {
+      for (double shear_share : {0.0, 0.6, 1.0}) {
+        // r = √(d² + C12²) = gap · m · rel, split between C11 − C22 and C12.
+        const auto at = [&](double rel) {
+          const double r = gap * mean * rel;
+          const double d = r * std::sqrt(1 - shear_share * shear_share), c12 = r * shear_share;
+          return Eigen::Vector4d(mean + d, mean - d, c12, 1.1);
+        };
+        // Relative distance 1e-10 from the switch: W's own variation between the two is ~1e-13.
+        const Eigen::Vector4d vb = at(1 - 1e-10), va = at(1 + 1e-10);
+        const auto side = [&](const Eigen::Vector4d& v) {  // the material's own test, r > gap m
+          return std::hypot(0.5 * (v(0) - v(1)), v(2)) > gap * 0.5 * (v(0) + v(1));
+        };
+        ASSERT_FALSE(side(vb));
+        ASSERT_TRUE(side(va));
+        const EnergyDerivatives below = m->energy(vb), above = m->energy(va);
+        EXPECT_LT(relative_error(below.d2W, above.d2W), 5e-12) << "mean " << mean << " shear " << shear_share;
+        EXPECT_LT(relative_error(below.dW, above.dW), 5e-12);
+        jump = std::max(jump, relative_error(below.d2W, above.d2W));
+        MaxError max;
+        check_energy_derivatives(*m, at(1.0), label + " at the switch", max, 1e-6, 1e-8);
+      }
     }
   }
   std::printf("[ switch   ] largest relative jump of d2W across the Taylor switch: %.2e\n", jump);
@@ -360,7 +311,10 @@ TEST(HgoOgden, StressFreeReferenceStateWithTheIncompressibleSmallStrainTangent) 
   // At C = I: S = 0 and D = μ0 [[4, 2, 0], [2, 4, 0], [0, 0, 1]] (plane stress, ν = ½), with
   // μ0 = μ for HGO (the fibres are at I* = 1, not in tension) and μ0 = ½ Σ μ_p α_p for Ogden.
   const std::vector<std::pair<std::string, double>> cases = {
-      {kHgo, 3e-3}, {kHgoDispersed, 3e-3}, {kOgden1, 0.5 * 0.5 * 3.2}, {kOgden3, 0.5 * (0.63 * 1.3 + 0.0012 * 5 + 0.02)}};
+      {"{type: hgo, mu: 3 kPa, k1: 2.3632 kPa, k2: 0.8393, beta: 29 deg}", 3e-3},
+      {"{type: hgo, mu: 3 kPa, k1: 2.3632 kPa, k2: 0.8393, beta: 29 deg, kappa: 0.2}", 3e-3},
+      {"{type: ogden, mu: [0.5 MPa], alpha: [3.2]}", 0.5 * 0.5 * 3.2},
+      {kOgden3, 0.5 * (0.63 * 1.3 + 0.0012 * 5 + 0.02)}};
   for (const auto& [yaml, mu0] : cases) {
     const auto m = material_from_yaml(yaml);
     const MembraneResponse r = membrane_response(*m, Eigen::Vector3d(1, 1, 0));

@@ -7,6 +7,13 @@
 
 namespace tunica::test {
 
+/// Tolerance of the relative error of a derivative against central differences with h = 1e-6 on
+/// arguments of order 1, as the tests over the material registry use it. Those differences are
+/// accurate to about 1e-9 (rounding ~1e-16/h of the function's scale, truncation ~h²; 1e-8 at
+/// worst over thousands of random states per material and element); a term of a material's
+/// tangent that is wrong by 0.1 % shows as an error of 1e-4 to 1e-3.
+constexpr double kFdTolerance = 1e-7;
+
 /// Central-difference gradient of a scalar function.
 inline Eigen::VectorXd fd_gradient(const std::function<double(const Eigen::VectorXd&)>& f, const Eigen::VectorXd& x,
                                    double h) {

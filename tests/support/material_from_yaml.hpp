@@ -5,6 +5,7 @@
 
 #include "io/read_params.hpp"
 #include "materials/membrane_material.hpp"
+#include "materials/solid_material.hpp"
 
 namespace tunica::test {
 
@@ -12,6 +13,12 @@ inline std::unique_ptr<MembraneMaterial> material_from_yaml(const std::string& y
   const YAML::Node node = YAML::Load(yaml);
   const auto& type = material_types().at(node["type"].as<std::string>());
   return type.make(read_params(DeckNode(node, "test", "materials.m"), type.spec, UnitSystem("mm", "N"), {"type"}));
+}
+
+inline std::unique_ptr<SolidMaterial> solid_from_yaml(const std::string& yaml) {
+  const YAML::Node node = YAML::Load(yaml);
+  const auto& type = solid_material_types().at(node["type"].as<std::string>());
+  return type.make(read_params(DeckNode(node, "test", "solid_materials.m"), type.spec, UnitSystem("mm", "N"), {"type"}));
 }
 
 }  // namespace tunica::test

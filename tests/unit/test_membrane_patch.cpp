@@ -5,7 +5,9 @@
 //  - the internal force vanishes at every interior node and every Gauss point
 //    has the same S (the one of C = Fᵀ F in the material frame);
 //  - Newton's method (a small dense assembly here) from perturbed interior
-//    nodes converges quadratically back to the homogeneous state.
+//    nodes converges quadratically back to the homogeneous state;
+// for every registered material, each of its samples and orientations of the material frame
+// (tests/support/material_registry.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,11 +15,11 @@
 #include <random>
 #include <vector>
 
-#include "../support/material_from_yaml.hpp"
+#include "../support/material_registry.hpp"
 #include "elements/membrane3d.hpp"
 
 using namespace tunica;
-using tunica::test::material_from_yaml;
+using tunica::test::MaterialCase;
 
 namespace {
 
@@ -31,11 +33,12 @@ struct Patch {
   std::vector<MembraneReference<4>> quad_ref;
 };
 
-constexpr double kMaterialAngle = 0.4;  // direction 1 at 0.4 rad from the X1 axis
+constexpr double kMaterialAngle = 0.4;  // direction 1 at 0.4 rad from the X1 axis, + the sample's orientation
 
 /// Square [0, 2]² of n × n cells, interior nodes moved randomly; a third of the
-/// cells split into two triangles (alternating diagonals), the rest quadrilaterals.
-Patch make_patch(int n, std::mt19937& rng, double H) {
+/// cells split into two triangles (alternating diagonals), the rest quadrilaterals;
+/// material direction 1 at `angle` from the X1 axis.
+Patch make_patch(int n, std::mt19937& rng, double H, double angle) {
   Patch p;
   std::uniform_real_distribution<double> u(-0.3, 0.3);
   const double h = 2.0 / n;
@@ -67,8 +70,8 @@ Patch make_patch(int n, std::mt19937& rng, double H) {
         p.quads.push_back({a, b, c, d});
       }
     }
-  const DirectionRule rule = [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
-    return Eigen::Vector3d(std::cos(kMaterialAngle), std::sin(kMaterialAngle), 0);
+  const DirectionRule rule = [angle](const Eigen::Vector3d&, const Eigen::Vector3d&) {
+    return Eigen::Vector3d(std::cos(angle), std::sin(angle), 0);
   };
   const auto ref = [&]<std::size_t M>(const std::array<int, M>& conn) {
     constexpr int N = static_cast<int>(M);
@@ -128,46 +131,50 @@ HomogeneousMap the_map() {
   return phi;
 }
 
-const char* kMaterials[] = {
-    "{type: neo_hookean, mu: 0.3}",
-    "{type: mooney_rivlin, b1: 0.2, b2: 0.05}",
-    "{type: fung, c: 0.061163, a1: 0.68238, a2: 0.60558, a4: 0.1067}",
-    "{type: fung, c: 0.05, a1: 1.1, a2: 0.7, a3: 0.9, a4: 0.2, a5: 0.15, a6: -0.1, a7: 0.4}",
+class MembranePatch : public ::testing::TestWithParam<MaterialCase> {
+protected:
+  void SetUp() override {
+    m = tunica::test::make_membrane(GetParam());
+    angle = kMaterialAngle + GetParam().angle;
+  }
+  std::unique_ptr<MembraneMaterial> m;
+  double angle = 0;
 };
+
+INSTANTIATE_TEST_SUITE_P(Registry, MembranePatch,
+                         ::testing::ValuesIn(tunica::test::membrane_cases(tunica::test::Orientations::each)),
+                         tunica::test::case_name);
 
 }  // namespace
 
-TEST(MembranePatch, HomogeneousDeformationGivesZeroInteriorForceAndUniformStress) {
+TEST_P(MembranePatch, HomogeneousDeformationGivesZeroInteriorForceAndUniformStress) {
   std::mt19937 rng(31);
-  const Patch p = make_patch(5, rng, 0.1);
+  const Patch p = make_patch(5, rng, 0.1, angle);
   ASSERT_FALSE(p.tris.empty());
   ASSERT_FALSE(p.quads.empty());
   const HomogeneousMap phi = the_map();
   Eigen::VectorXd x(3 * p.X.size());
   for (std::size_t i = 0; i < p.X.size(); ++i) x.segment<3>(3 * i) = phi(p.X[i]);
   // The expected stress: C_ij = (F e_i)·(F e_j) in the material frame.
-  const Eigen::Vector2d e1(std::cos(kMaterialAngle), std::sin(kMaterialAngle)), e2(-e1.y(), e1.x());
+  const Eigen::Vector2d e1(std::cos(angle), std::sin(angle)), e2(-e1.y(), e1.x());
   const Eigen::Vector2d f1 = phi.F * e1, f2 = phi.F * e2;
-  for (const char* yaml : kMaterials) {
-    const auto m = material_from_yaml(yaml);
-    const Eigen::Vector3d S0 = membrane_response(*m, Eigen::Vector3d(f1.squaredNorm(), f2.squaredNorm(), f1.dot(f2))).S;
-    Eigen::VectorXd f;
-    std::vector<Eigen::Vector3d> S;
-    assemble(p, x, *m, f, nullptr, &S);
-    double fmax = 0, finterior = 0;
-    for (std::size_t i = 0; i < p.X.size(); ++i) {
-      const double fi = f.segment<3>(3 * i).norm();
-      fmax = std::max(fmax, fi);
-      if (!p.boundary[i]) finterior = std::max(finterior, fi);
-    }
-    EXPECT_LT(finterior, 1e-10 * fmax) << yaml;
-    for (const auto& s : S) EXPECT_LT((s - S0).norm(), 1e-12 * S0.norm()) << yaml;
+  const Eigen::Vector3d S0 = membrane_response(*m, Eigen::Vector3d(f1.squaredNorm(), f2.squaredNorm(), f1.dot(f2))).S;
+  Eigen::VectorXd f;
+  std::vector<Eigen::Vector3d> S;
+  assemble(p, x, *m, f, nullptr, &S);
+  double fmax = 0, finterior = 0;
+  for (std::size_t i = 0; i < p.X.size(); ++i) {
+    const double fi = f.segment<3>(3 * i).norm();
+    fmax = std::max(fmax, fi);
+    if (!p.boundary[i]) finterior = std::max(finterior, fi);
   }
+  EXPECT_LT(finterior, 1e-10 * fmax);
+  for (const auto& s : S) EXPECT_LT((s - S0).norm(), 1e-12 * S0.norm());
 }
 
-TEST(MembranePatch, NewtonFromPerturbedInteriorNodesConvergesQuadraticallyToTheHomogeneousState) {
+TEST_P(MembranePatch, NewtonFromPerturbedInteriorNodesConvergesQuadraticallyToTheHomogeneousState) {
   std::mt19937 rng(32);
-  const Patch p = make_patch(4, rng, 0.1);
+  const Patch p = make_patch(4, rng, 0.1, angle);
   const HomogeneousMap phi = the_map();
   const Eigen::Vector3d normal = phi.Q.col(2);
   std::vector<int> free;
@@ -177,50 +184,48 @@ TEST(MembranePatch, NewtonFromPerturbedInteriorNodesConvergesQuadraticallyToTheH
   Eigen::VectorXd exact(3 * p.X.size());
   for (std::size_t i = 0; i < p.X.size(); ++i) exact.segment<3>(3 * i) = phi(p.X[i]);
   std::uniform_real_distribution<double> u(-1, 1);
-  for (const char* yaml : kMaterials) {
-    const auto m = material_from_yaml(yaml);
-    Eigen::VectorXd x = exact;
-    for (std::size_t i = 0; i < p.X.size(); ++i)
-      if (!p.boundary[i]) {
-        // One draw per statement: the evaluation order of function arguments is unspecified
-        // (gcc and clang differ), and the perturbation must not depend on the compiler.
-        const double a = 0.06 * u(rng);
-        const double b = 0.06 * u(rng);
-        const double c = 0.03 * u(rng);
-        x.segment<3>(3 * i) += phi.Q * Eigen::Vector3d(a, b, 0) + c * normal;
-      }
-    Eigen::VectorXd f, ff(free.size());
-    Eigen::MatrixXd K, Kff(free.size(), free.size());
-    assemble(p, exact, *m, f, nullptr);
-    const double scale = f.norm();  // boundary reactions of the solution
-    std::vector<double> res;
-    for (int it = 0; it < 20; ++it) {
-      assemble(p, x, *m, f, &K);
-      for (std::size_t i = 0; i < free.size(); ++i) {
-        ff(i) = f(free[i]);
-        for (std::size_t j = 0; j < free.size(); ++j) Kff(i, j) = K(free[i], free[j]);
-      }
-      res.push_back(ff.norm() / scale);
-      if (res.back() < 1e-13) break;
-      const Eigen::VectorXd du = Kff.partialPivLu().solve(-ff);
-      for (std::size_t i = 0; i < free.size(); ++i) x(free[i]) += du(i);
+  const std::string yaml = tunica::test::sample_yaml(GetParam());
+  Eigen::VectorXd x = exact;
+  for (std::size_t i = 0; i < p.X.size(); ++i)
+    if (!p.boundary[i]) {
+      // One draw per statement: the evaluation order of function arguments is unspecified
+      // (gcc and clang differ), and the perturbation must not depend on the compiler.
+      const double a = 0.06 * u(rng);
+      const double b = 0.06 * u(rng);
+      const double c = 0.03 * u(rng);
+      x.segment<3>(3 * i) += phi.Q * Eigen::Vector3d(a, b, 0) + c * normal;
     }
-    std::cout << yaml << ": relative residuals";
-    for (double r : res) std::cout << " " << r;
-    std::cout << "\n";
-    ASSERT_LT(res.back(), 1e-13) << yaml;
-    // Plain Newton (no line search) from interior nodes moved by up to 6 % of the element
-    // size: 6–9 iterations (Mooney–Rivlin spends two on the way in); the order is tested below.
-    EXPECT_LE(res.size(), 10u) << yaml;
-    EXPECT_LT((x - exact).norm() / exact.norm(), 1e-12) << yaml;
-    // Quadratic convergence: once in the asymptotic range (residual < 1e-3 and
-    // above round-off), each step squares the residual up to a moderate constant.
-    int checked = 0;
-    for (std::size_t k = 0; k + 1 < res.size(); ++k)
-      if (res[k] < 1e-3 && res[k + 1] > 1e-14) {
-        EXPECT_LT(res[k + 1], 100 * res[k] * res[k]) << yaml << " step " << k;
-        ++checked;
-      }
-    EXPECT_GE(checked, 1) << yaml;
+  Eigen::VectorXd f, ff(free.size());
+  Eigen::MatrixXd K, Kff(free.size(), free.size());
+  assemble(p, exact, *m, f, nullptr);
+  const double scale = f.norm();  // boundary reactions of the solution
+  std::vector<double> res;
+  for (int it = 0; it < 20; ++it) {
+    assemble(p, x, *m, f, &K);
+    for (std::size_t i = 0; i < free.size(); ++i) {
+      ff(i) = f(free[i]);
+      for (std::size_t j = 0; j < free.size(); ++j) Kff(i, j) = K(free[i], free[j]);
+    }
+    res.push_back(ff.norm() / scale);
+    if (res.back() < 1e-13) break;
+    const Eigen::VectorXd du = Kff.partialPivLu().solve(-ff);
+    for (std::size_t i = 0; i < free.size(); ++i) x(free[i]) += du(i);
   }
+  std::cout << yaml << ": relative residuals";
+  for (double r : res) std::cout << " " << r;
+  std::cout << "\n";
+  ASSERT_LT(res.back(), 1e-13) << yaml;
+  // Plain Newton (no line search) from interior nodes moved by up to 6 % of the element
+  // size: 6–9 iterations (Mooney–Rivlin spends two on the way in); the order is tested below.
+  EXPECT_LE(res.size(), 10u) << yaml;
+  EXPECT_LT((x - exact).norm() / exact.norm(), 1e-12) << yaml;
+  // Quadratic convergence: once in the asymptotic range (residual < 1e-3 and
+  // above round-off), each step squares the residual up to a moderate constant.
+  int checked = 0;
+  for (std::size_t k = 0; k + 1 < res.size(); ++k)
+    if (res[k] < 1e-3 && res[k + 1] > 1e-14) {
+      EXPECT_LT(res[k + 1], 100 * res[k] * res[k]) << yaml << " step " << k;
+      ++checked;
+    }
+  EXPECT_GE(checked, 1) << yaml;
 }
