@@ -236,8 +236,10 @@ TEST(Membrane3d, GaussPointOutputIsConsistent) {
       EXPECT_NEAR(p.e1.norm(), 1, 1e-14);
       EXPECT_NEAR(p.e2.norm(), 1, 1e-14);
       EXPECT_NEAR(p.e1.dot(p.e2), 0, 1e-14);
-      EXPECT_NEAR(p.e1.dot(N0), 0, 1e-14);
-      EXPECT_LT((p.e1.cross(p.e2) - N0).norm(), 1e-14);
+      // N0 is recomputed here in another order of operations than the element's normal: their
+      // difference is round-off amplified by the random element's distortion (a few hundred ε).
+      EXPECT_NEAR(p.e1.dot(N0), 0, 1e-12);
+      EXPECT_LT((p.e1.cross(p.e2) - N0).norm(), 1e-12);
       EXPECT_NEAR(p.weight, w * (X * dN).col(0).cross((X * dN).col(1)).norm() * H, 1e-14);
       // Stretches and strains.
       for (int i = 0; i < 2; ++i) EXPECT_NEAR(p.E(i), 0.5 * (p.lambda(i) * p.lambda(i) - 1), 1e-13);
