@@ -2,7 +2,7 @@
 // - linear solvers: the deck's choices are the registered names, an unknown name or a second
 //   registration is refused;
 // - solver settings: the declared defaults are SolverSettings{} (written once), every declared
-//   key sets its member, and a deck's keys reach Newton;
+//   key sets its member, and a step inherits the top-level keys it does not override;
 // - history quantities: every entry has the evaluator of its target and only that;
 // - VTK cell types come from the element kind, an unknown kind is an error.
 #include <gtest/gtest.h>
