@@ -2,10 +2,12 @@
 // The discrete system of a model: DOF numbering with prescribed DOFs removed,
 // the sparsity pattern of the free-DOF tangent computed once (from the node
 // adjacency of the elements and of the deformable contact pairs, see
-// contact_assembly.hpp), each element's scatter positions into it, the
-// reference data of the 3-D elements computed once, and the assembly of the
-// residual R = f_int − f_ext (all DOFs, so reactions can be read) and of
-// K = ∂R/∂u (free DOFs only) from the element and load kernels.
+// contact_assembly.hpp), each element's scatter positions into it and the
+// colouring, all generic; and the assembly of the residual R = f_int − f_ext
+// (all DOFs, so reactions can be read) and of K = ∂R/∂u (free DOFs only) as the
+// sum of the contributions: one BlockContribution per block of elements, built by
+// its element type (contributions/element_type.hpp), the held DOFs of parts that
+// enter later, and the contact pairs. System never looks at an element kind.
 //
 // Parts that enter in a later step (Part::enter_step, Model::part_active): while a
 // part is inactive its elements, the pressure loads on it and its contact pairs are
@@ -15,21 +17,19 @@
 // u_i stays exactly 0, so the part enters stress free in its deck geometry).
 //
 // Parallel assembly: the elements of each block are coloured once (greedy: no
-// two elements of one colour share a node) and each colour is one OpenMP loop.
-// Elements of a colour touch disjoint entries of R and K, so no locks are
-// needed, and every entry receives its contributions in the same order
-// whatever the number of threads: results are identical bit for bit.
+// two elements of one colour share a node) and each colour is one OpenMP loop
+// (contributions/element_loop.hpp): results are identical bit for bit whatever
+// the number of threads.
 #include <Eigen/Sparse>
 #include <array>
 #include <memory>
 #include <vector>
 
 #include "assembly/contact_assembly.hpp"
-#include "assembly/references.hpp"
-#include "linalg/sparse_matrix.hpp"
-#include "elements/axisym_shell.hpp"
+#include "contributions/element_type.hpp"
 #include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"
+#include "linalg/sparse_matrix.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
@@ -100,33 +100,8 @@ public:
   bool held(int dof, int step) const { return step < dof_enter_[dof]; }
 
 private:
-  struct Block {
-    std::vector<MembraneReference<3>> tri;
-    std::vector<MembraneReference<4>> quad;
-    std::vector<int> scatter;  ///< per element, (n·d)² positions in K's value array (−1: not free-free)
-    std::vector<int> order;    ///< element indices, colour by colour
-    std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])
-    std::vector<double> curvature;  ///< 3-D blocks: per element, the mean curvature H_e (surface_curvature.hpp)
-  };
   /// Pressure on each part: the sum of the loads acting on it, with their sides.
   std::vector<double> part_pressures(const LoadState& loads) const;
-  /// Runs kernel(e) for every element of a block, colour by colour, in parallel within a colour.
-  /// An exception of a kernel (an inverted element) is rethrown after the loop: the one of
-  /// the lowest element index, so that the message does not depend on the threads.
-  template <class Kernel>
-  static void for_each_coloured(const Block& data, Kernel&& kernel);
-  template <int N>
-  void assemble_surface(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
-                        double& scale2) const;
-  void assemble_axisym(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
-                       double& scale2) const;
-  /// Axisymmetric shell block: f and K of elements/axisym_shell.hpp and the follower pressure on the
-  /// Hermite mid-surface (loads/axisym_shell_pressure.hpp), scattered through the DOF map (system_shell.cpp).
-  void assemble_shell(int p, int b, const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
-                      double& scale2) const;
-  /// Axisymmetric solid block: f and K of elements/axisym_solid.hpp, scattered like the membranes.
-  void assemble_solid(int p, int b, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
-                      double& scale2) const;
   /// Holds the free DOFs of nodes of inactive parts: R_i += k_i u_i, K_ii += k_i.
   void assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K) const;
   /// k_i of the held DOFs: the diagonal of the tangent at u = 0 of the parts that enter later.
@@ -138,7 +113,7 @@ private:
   std::vector<int> prescribed_;
   int num_free_ = 0;
   SparseMatrix pattern_;
-  std::vector<std::vector<Block>> blocks_;  ///< per part, per block
+  std::vector<std::vector<std::unique_ptr<BlockContribution>>> blocks_;  ///< per part, per block
   std::vector<double> extent_;              ///< per part: the diagonal of its reference bounding box
   /// Per DOF: the step from which it is free to move (the lowest enter_step of the parts using its node; 0 if none).
   std::vector<int> dof_enter_;
@@ -157,19 +132,7 @@ private:
 /// order[start[c] … start[c+1]).
 void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start);
 
-/// Gauss points per element of a kind (shells: see points_per_element(part, kind)).
-constexpr int points_per_element(ElementKind k) { return k == ElementKind::axisym2 ? 2 : k == ElementKind::tri3 ? 1 : 4; }
-/// Gauss points per element of a block of a part (System::points): shells have their part's meridian points.
-inline int points_per_element(const Part& part, ElementKind k) {
-  return k == ElementKind::shell2 ? part.shell_meridian_points : points_per_element(k);
-}
-/// Unknowns per node of an element kind: 4 on shells (r, z, r′, z′), else the position DOFs.
-constexpr int unknowns_per_node(ElementKind k) { return k == ElementKind::shell2 ? 4 : k == ElementKind::tri3 || k == ElementKind::quad4 ? 3 : 2; }
-/// The quadrature of a shell part.
-inline ShellQuadrature shell_quadrature(const Part& part) {
-  return {part.shell_meridian_points, part.shell_thickness_points};
-}
-/// The material-dependent point states are MembranePoint for membranes and SolidPoint for solids.
-constexpr bool is_solid_kind(ElementKind k) { return k == ElementKind::solid4; }
+/// Gauss points per element of a block of a part (System::points order).
+inline int points_per_element(const Part& part, ElementKind k) { return element_type(k).points_per_element(part); }
 
 }  // namespace tunica

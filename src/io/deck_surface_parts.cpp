@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "assembly/references.hpp"
+#include "contributions/element_type.hpp"
+#include "elements/membrane3d.hpp"
 #include "core/printable.hpp"
 #include "io/deck_limits.hpp"
 #include "mesh/gmsh_reader.hpp"
@@ -232,8 +233,7 @@ void finish_surface_parts(const DeckNode& parts, Model& m) {
     int first = 0;
     for (const auto& block : part.blocks) {
       try {
-        if (block.kind == ElementKind::tri3) block_references<3>(m, part, block, first);
-        if (block.kind == ElementKind::quad4) block_references<4>(m, part, block, first);
+        if (const ElementType& type = element_type(block.kind); type.check) type.check(m, part, block, first);
       } catch (const BadElement& e) {
         const std::string what = e.what();
         const DeckNode pn = parts[part.name];

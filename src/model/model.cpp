@@ -5,28 +5,6 @@
 
 namespace tunica {
 
-std::uint8_t vtk_cell_type(ElementKind k) {
-  switch (k) {
-    case ElementKind::axisym2:
-    case ElementKind::shell2: return 3;  // VTK_LINE
-    case ElementKind::tri3: return 5;    // VTK_TRIANGLE
-    case ElementKind::quad4:
-    case ElementKind::solid4: return 9;  // VTK_QUAD
-  }
-  throw std::logic_error("no VTK cell type for element kind " + std::to_string(static_cast<int>(k)));
-}
-
-std::uint8_t vtk_revolved_cell_type(ElementKind k) {
-  switch (k) {
-    case ElementKind::axisym2:
-    case ElementKind::shell2: return 9;    // VTK_QUAD
-    case ElementKind::solid4: return 12;   // VTK_HEXAHEDRON
-    case ElementKind::tri3:
-    case ElementKind::quad4: break;
-  }
-  throw std::logic_error("element kind " + std::to_string(static_cast<int>(k)) + " is not axisymmetric");
-}
-
 int Model::find_node_set(const std::string& name) const {
   for (std::size_t i = 0; i < node_sets.size(); ++i)
     if (node_sets[i].name == name) return static_cast<int>(i);

@@ -40,14 +40,6 @@ enum class ElementKind { axisym2, tri3, quad4, solid4, shell2 };
 constexpr int nodes_per_element(ElementKind k) {
   return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2 : k == ElementKind::tri3 ? 3 : 4;
 }
-/// The VTK cell type (vtkCellType.h) of an element as its nodes lie: in the (r, z) plane for the
-/// axisymmetric kinds, in space for the 3-D membranes. std::logic_error for a kind without one.
-std::uint8_t vtk_cell_type(ElementKind k);
-/// The VTK cell type of an axisymmetric element revolved between two hoop angles (a membrane's or
-/// shell's line sweeps a quadrilateral, a solid's quadrilateral a hexahedron); std::logic_error for
-/// the 3-D kinds.
-std::uint8_t vtk_revolved_cell_type(ElementKind k);
-
 /// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
 struct ElementBlock {
   ElementKind kind = ElementKind::axisym2;

@@ -236,7 +236,7 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
     const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
     std::size_t k = 0;
     for (const auto& block : m.parts[p].blocks) {
-      const int q = points_per_element(block.kind);
+      const int q = points_per_element(m.parts[p], block.kind);
       for (int e = 0; e < block.size(); ++e, k += q) {
         MembranePoint avg;
         avg.lambda.setZero();

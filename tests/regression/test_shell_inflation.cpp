@@ -18,7 +18,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/shell_decks.hpp"
-#include "assembly/shell_nodes.hpp"
+#include "contributions/kinematics.hpp"
 #include "assembly/system.hpp"
 #include "elements/shell_output.hpp"
 
@@ -102,11 +102,12 @@ TEST(ShellInflation, TubeHoopEquilibriumAndTheThinTubeClosedForm) {
   const double pressure = a.loads().pressure[0];
   double worst_eq = 0, largest_moment = 0;
   for (int e = 0; e < wall.blocks[0].size(); ++e) {
-    ShellNodes X, x;
+    ShellKinematics::State s;
     ShellVector f;
     std::vector<ShellPoint> pts;
-    shell_nodes(m, wall.blocks[0].element(e), a.displacement(), X, x);
-    axisym_shell(X, x, wall.thickness, *wall.material, f, nullptr, shell_quadrature(wall), &pts);
+    ShellKinematics::gather(m, wall.blocks[0].element(e), a.displacement(), s);
+    axisym_shell(s.X, s.x, wall.thickness, *wall.material, f, nullptr,
+                 {wall.shell_meridian_points, wall.shell_thickness_points}, &pts);
     for (const ShellPoint& pt : pts) {
       double lhs = 0;
       for (std::size_t k = 0; k < pt.eta.size(); ++k) {

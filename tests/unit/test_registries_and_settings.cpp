@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "contributions/element_type.hpp"
 #include "io/deck.hpp"
 #include "linalg/linear_solver.hpp"
 #include "model/solver_settings.hpp"
@@ -150,6 +151,25 @@ TEST(VtkCellTypes, ComeFromTheElementKindAndAnUnknownKindIsAnError) {
   EXPECT_EQ(vtk_revolved_cell_type(ElementKind::solid4), 12);
   EXPECT_THROW(vtk_revolved_cell_type(ElementKind::tri3), std::logic_error);
   EXPECT_THROW(vtk_cell_type(static_cast<ElementKind>(99)), std::logic_error);
+}
+
+TEST(ElementTypes, EveryKindIsRegisteredOnceWithTheModelsNodeCount) {
+  // Every ElementKind value up to the last one has an element type (a kind without one would
+  // be refused by System, not assembled silently), and its declaration agrees with the model's.
+  std::set<ElementKind> kinds;
+  for (const ElementType* t : element_types()) {
+    EXPECT_TRUE(kinds.insert(t->kind).second) << t->name;
+    EXPECT_EQ(t->nodes, nodes_per_element(t->kind)) << t->name;
+    EXPECT_GT(t->unknowns_per_node, 0) << t->name;
+    EXPECT_NE(t->vtk_cell, 0) << t->name;
+    EXPECT_TRUE(static_cast<bool>(t->make)) << t->name;
+    EXPECT_TRUE(static_cast<bool>(t->points_per_element)) << t->name;
+    EXPECT_FALSE(t->name.empty());
+  }
+  for (ElementKind k : {ElementKind::axisym2, ElementKind::tri3, ElementKind::quad4, ElementKind::solid4, ElementKind::shell2})
+    EXPECT_EQ(kinds.count(k), 1u) << static_cast<int>(k);
+  ElementType again = element_type(ElementKind::tri3);
+  EXPECT_THROW(register_element_type(again), std::logic_error);
 }
 
 }  // namespace

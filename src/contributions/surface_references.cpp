@@ -1,4 +1,4 @@
-#include "assembly/references.hpp"
+#include "contributions/surface_references.hpp"
 
 #include <fmt/format.h>
 

@@ -1,0 +1,64 @@
+// The 2-node axisymmetric membrane (elements/axisym_membrane.hpp, theory manual §3) with the
+// follower pressure on its meridian segment (loads/axisym_pressure.hpp, §6) and the enclosed
+// volume V_e = π ∫ r² dz = π Δz (r₁² + r₁r₂ + r₂²)/3 of a straight segment ((6.7)).
+#include <numbers>
+
+#include "contributions/element_loop.hpp"
+#include "contributions/kinematics.hpp"
+#include "elements/axisym_membrane.hpp"
+#include "loads/axisym_pressure.hpp"
+
+namespace tunica {
+
+namespace {
+
+struct AxisymMembraneKernel : PlaneKinematics<2> {
+  static constexpr bool kPressure = true, kStartStiffness = false, kSolid = false;
+  using Vector = Eigen::Vector4d;
+  using Matrix = Eigen::Matrix4d;
+  const Part& part;
+  explicit AxisymMembraneKernel(const BlockContext& ctx) : part(ctx.part) {}
+
+  void internal(int, const State& s, Vector& f, Matrix* K) const {
+    axisym_membrane(s.X, s.x, part.thickness, *part.material, f, K);
+  }
+  double length2(const Model&, const int*, const State& s) const { return (s.X.col(1) - s.X.col(0)).squaredNorm(); }
+  void pressure(const State& s, double p, Vector& f, Matrix* K) const { axisym_pressure(s.x, p, f, K); }
+  double volume(const State& s, const VolumeMeasure&, Vector* grad) const {
+    const double r1 = s.x(0, 0), r2 = s.x(0, 1), dz = s.x(1, 1) - s.x(1, 0);
+    const double q = (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
+    if (grad) {
+      (*grad)(0) = std::numbers::pi * dz * (2 * r1 + r2) / 3.0;
+      (*grad)(1) = -(std::numbers::pi * q);
+      (*grad)(2) = std::numbers::pi * dz * (r1 + 2 * r2) / 3.0;
+      (*grad)(3) = std::numbers::pi * q;
+    }
+    return std::numbers::pi * dz * q;
+  }
+  void start(int, double, Matrix&) const {}
+  void points(int, const State& s, std::vector<MembranePoint>& out) const {
+    Vector f;
+    std::array<MembranePoint, 2> pts;
+    axisym_membrane(s.X, s.x, part.thickness, *part.material, f, nullptr, &pts);
+    out.insert(out.end(), pts.begin(), pts.end());
+  }
+  double energy(int, const State&) const { return 0; }
+};
+
+const bool registered = [] {
+  register_element_type({.kind = ElementKind::axisym2,
+                         .name = "axisymmetric membrane (2 nodes)",
+                         .nodes = 2,
+                         .unknowns_per_node = 2,
+                         .solid = false,
+                         .vtk_cell = 3,           // VTK_LINE
+                         .vtk_revolved_cell = 9,  // VTK_QUAD
+                         .points_per_element = [](const Part&) { return 2; },
+                         .make = make_kernel_block<AxisymMembraneKernel>,
+                         .check = {}});
+  return true;
+}();
+
+}  // namespace
+
+}  // namespace tunica

@@ -1,0 +1,215 @@
+#pragma once
+// The one element loop: gather → local kernel → scatter, colour by colour
+// (docs/architecture.md). KernelBlock<Kernel> implements BlockContribution
+// (contributions/element_type.hpp) for any element kernel; a kernel supplies
+//
+//   struct Kernel : SomeKinematics<...> {          // contributions/kinematics.hpp: State, gather, dof
+//     static constexpr bool kPressure;             // carries follower pressure (theory manual §6)
+//     static constexpr bool kStartStiffness;       // has the stress-free start's K₀ (theory manual §7.2)
+//     static constexpr bool kSolid;                // Gauss-point states are SolidPoint
+//     explicit Kernel(const BlockContext&);        // reference data, the part's material
+//     void internal(int e, const State&, Vector& f, Matrix* K) const;
+//     double length2(const Model&, const int* en, const State&) const;  // L_e² of the round-off yardstick
+//     void pressure(const State&, double p, Vector& f, Matrix* K) const;             // if kPressure
+//     double volume(const State&, const VolumeMeasure&, Vector* grad) const;         // if kPressure
+//     void start(int e, double T0, Matrix& K) const;                                 // if kStartStiffness
+//     void points(int e, const State&, std::vector<MembranePoint or SolidPoint>&) const;
+//     double energy(int e, const State&) const;                                      // if kSolid
+//   };
+//
+// Parallel assembly: each colour is one OpenMP loop; elements of a colour touch disjoint
+// entries of R and K, so no locks are needed and every entry receives its contributions in
+// the same order whatever the number of threads: results are identical bit for bit.
+#include <exception>
+#include <vector>
+
+#include "contributions/element_type.hpp"
+
+namespace tunica {
+
+/// Runs kernel(e) for every element of a layout, colour by colour, in parallel within a colour.
+/// An exception of a kernel (an inverted element) is rethrown after the colour: the one of the
+/// lowest element index, so that the message does not depend on the threads.
+template <class Body>
+void for_each_coloured(const BlockLayout& layout, Body&& body) {
+  std::exception_ptr error;
+  int error_element = -1;
+  // Small colours run on one thread: below ~1000 elements the fork/join costs more than it saves.
+  constexpr int kMinParallel = 1024;
+  for (std::size_t c = 0; c + 1 < layout.colour_start.size(); ++c) {
+    const int begin = layout.colour_start[c], end = layout.colour_start[c + 1];
+#pragma omp parallel for schedule(static) if (end - begin >= kMinParallel)
+    for (int k = begin; k < end; ++k) {
+      const int e = layout.order[k];
+      try {
+        body(e);
+      } catch (...) {
+#pragma omp critical(tunica_assembly_error)
+        if (error_element < 0 || e < error_element) {
+          error = std::current_exception();
+          error_element = e;
+        }
+      }
+    }
+    if (error) std::rethrow_exception(error);
+  }
+}
+
+template <class Kernel>
+class KernelBlock final : public BlockContribution {
+public:
+  static constexpr int kDofs = Kernel::kNodes * Kernel::kUnknowns;
+  using Vector = Eigen::Matrix<double, kDofs, 1>;
+  using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
+  using State = typename Kernel::State;
+
+  explicit KernelBlock(BlockContext ctx)
+      : model_(ctx.model), block_(ctx.block), kernel_(ctx), layout_(std::move(ctx.layout)),
+        curvature_(std::move(ctx.curvature)) {}
+
+  void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
+                double& scale2) const override {
+    std::vector<double> scale_e(block_.size());  // per element: summed in element order, whatever the threads
+    for_each_coloured(layout_, [&](int e) {
+      Vector f;
+      Matrix Ke;
+      State s;
+      const int* en = block_.element(e);
+      Kernel::gather(model_, en, u, s);
+      kernel_.internal(e, s, f, K ? &Ke : nullptr);
+      double s2 = f.squaredNorm();
+      if constexpr (Kernel::kPressure) {
+        if (pressure != 0.0) {
+          Vector fp;
+          Matrix dfp;
+          kernel_.pressure(s, pressure, fp, K ? &dfp : nullptr);
+          s2 += fp.squaredNorm();
+          f -= fp;
+          if (K) Ke -= dfp;
+        }
+      }
+      // Stiffness × element size bounds the round-off of stresses computed near zero strain.
+      if (K) s2 += Ke.squaredNorm() * kernel_.length2(model_, en, s);
+      scale_e[e] = s2;
+      scatter(en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
+    });
+    for (double s2 : scale_e) scale2 += s2;
+  }
+
+  void pressure_load(const Eigen::VectorXd& u, double sign, Eigen::VectorXd& g) const override {
+    if constexpr (Kernel::kPressure) {
+      for (int e = 0; e < block_.size(); ++e) {
+        State s;
+        Vector f;
+        const int* en = block_.element(e);
+        Kernel::gather(model_, en, u, s);
+        kernel_.pressure(s, sign, f, nullptr);
+        for (int a = 0; a < kDofs; ++a) g(Kernel::dof(model_, en, a)) += f(a);
+      }
+    }
+  }
+
+  void add_volume(const Eigen::VectorXd& u, const VolumeMeasure& how, double& V, Eigen::VectorXd* grad) const override {
+    if constexpr (Kernel::kPressure) {
+      for (int e = 0; e < block_.size(); ++e) {
+        State s;
+        Vector ge;
+        const int* en = block_.element(e);
+        Kernel::gather(model_, en, u, s);
+        V += kernel_.volume(s, how, grad ? &ge : nullptr);
+        if (grad)
+          for (int a = 0; a < kDofs; ++a) (*grad)(Kernel::dof(model_, en, a)) += ge(a);
+      }
+    }
+  }
+
+  void reference_diagonal(Eigen::VectorXd& diag) const override {
+    const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(diag.size());
+    for (int e = 0; e < block_.size(); ++e) {
+      State s;
+      Vector f;
+      Matrix Ke;
+      const int* en = block_.element(e);
+      Kernel::gather(model_, en, u0, s);
+      kernel_.internal(e, s, f, &Ke);
+      for (int a = 0; a < kDofs; ++a) diag(Kernel::dof(model_, en, a)) += Ke(a, a);
+    }
+  }
+
+  void start_stiffness(double abs_pressure, double cap, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
+                       SparseMatrix& K) const override {
+    if constexpr (Kernel::kStartStiffness) {
+      for_each_coloured(layout_, [&](int e) {
+        // T₀ = |p| / max(|H_e|, cap), theory manual (7.7).
+        const double T0 = abs_pressure / std::max(std::abs(curvature_[e]), cap);
+        Matrix Ke;
+        kernel_.start(e, T0, Ke);
+        const int* en = block_.element(e);
+        Vector f = Vector::Zero();
+        if (d.size() > 0) {
+          Vector de;
+          for (int a = 0; a < kDofs; ++a) de(a) = d(Kernel::dof(model_, en, a));
+          f = Ke * de;
+        }
+        scatter(en, f, &Ke, layout_.scatter.data() + kDofs * kDofs * e, Kd, &K);
+      });
+    }
+  }
+
+  void membrane_points(const Eigen::VectorXd& u, std::vector<MembranePoint>& out) const override {
+    if constexpr (!Kernel::kSolid) points(u, out);
+  }
+
+  void solid_points(const Eigen::VectorXd& u, std::vector<SolidPoint>& out) const override {
+    if constexpr (Kernel::kSolid) points(u, out);
+  }
+
+  void add_energy(const Eigen::VectorXd& u, double& energy) const override {
+    if constexpr (Kernel::kSolid) {
+      for (int e = 0; e < block_.size(); ++e) {
+        State s;
+        Kernel::gather(model_, block_.element(e), u, s);
+        energy += kernel_.energy(e, s);
+      }
+    } else {
+      std::vector<MembranePoint> pts;
+      points(u, pts);
+      for (const auto& pt : pts) energy += pt.W * pt.weight;
+    }
+  }
+
+private:
+  template <class Point>
+  void points(const Eigen::VectorXd& u, std::vector<Point>& out) const {
+    for (int e = 0; e < block_.size(); ++e) {
+      State s;
+      Kernel::gather(model_, block_.element(e), u, s);
+      kernel_.points(e, s, out);
+    }
+  }
+
+  /// R(dof a) += f(a); K's values at the scatter positions += K_e.
+  void scatter(const int* en, const Vector& f, const Matrix* Ke, const int* pos, Eigen::VectorXd& R,
+               SparseMatrix* K) const {
+    for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
+    if (!K) return;
+    double* values = K->valuePtr();
+    for (int a = 0; a < kDofs; ++a)
+      for (int b = 0; b < kDofs; ++b)
+        if (const int k = pos[a * kDofs + b]; k >= 0) values[k] += (*Ke)(a, b);
+  }
+
+  const Model& model_;
+  const ElementBlock& block_;
+  Kernel kernel_;
+  BlockLayout layout_;
+  std::vector<double> curvature_;
+};
+
+/// The `make` of an element type implemented by Kernel.
+template <class Kernel>
+std::unique_ptr<BlockContribution> make_kernel_block(BlockContext ctx) {
+  return std::make_unique<KernelBlock<Kernel>>(std::move(ctx));
+}
+
+}  // namespace tunica

@@ -1,0 +1,58 @@
+#pragma once
+// The kernel of the 3-D membrane elements (elements/membrane3d.hpp, theory manual §5) of any
+// surface shape with N nodes, with the follower pressure and enclosed volume on the element's
+// surface (loads/surface_pressure.hpp, §6) and the stress-free start's normal-tension stiffness
+// (elements/start_tension.hpp, (7.6)–(7.8)). A surface element type is this kernel and its
+// registration (surface_membrane_types.cpp; a new shape: its own file, docs/architecture.md).
+#include "contributions/element_loop.hpp"
+#include "contributions/kinematics.hpp"
+#include "contributions/surface_references.hpp"
+#include "elements/membrane3d.hpp"
+#include "elements/start_tension.hpp"
+#include "loads/surface_pressure.hpp"
+
+namespace tunica {
+
+template <int N>
+struct SurfaceMembraneKernel : SpaceKinematics<N> {
+  static constexpr bool kPressure = true, kStartStiffness = true, kSolid = false;
+  using State = typename SpaceKinematics<N>::State;
+  using Vector = ElementVector<N>;
+  using Matrix = ElementMatrix<N>;
+  const Part& part;
+  std::vector<MembraneReference<N>> refs;
+  explicit SurfaceMembraneKernel(const BlockContext& ctx)
+      : part(ctx.part), refs(block_references<N>(ctx.model, ctx.part, ctx.block, ctx.first_element)) {}
+
+  void internal(int e, const State& s, Vector& f, Matrix* K) const { membrane3d<N>(refs[e], s.x, *part.material, f, K); }
+  double length2(const Model& m, const int* en, const State&) const { return (m.X[en[1]] - m.X[en[0]]).squaredNorm(); }
+  void pressure(const State& s, double p, Vector& f, Matrix* K) const { surface_pressure<N>(s.x, p, f, K); }
+  double volume(const State& s, const VolumeMeasure& how, Vector* grad) const { return enclosed_volume<N>(s.x, how, grad); }
+  void start(int e, double T0, Matrix& K) const { normal_tension_stiffness<N>(refs[e], T0, K); }
+  void points(int e, const State& s, std::vector<MembranePoint>& out) const {
+    Vector f;
+    std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints> pts;
+    membrane3d<N>(refs[e], s.x, *part.material, f, nullptr, &pts);
+    out.insert(out.end(), pts.begin(), pts.end());
+  }
+  double energy(int, const State&) const { return 0; }
+};
+
+/// The element type of the N-node surface membrane of kind `kind`.
+template <int N>
+ElementType surface_membrane_type(ElementKind kind, std::string name, std::uint8_t vtk_cell) {
+  return {.kind = kind,
+          .name = std::move(name),
+          .nodes = N,
+          .unknowns_per_node = 3,
+          .solid = false,
+          .vtk_cell = vtk_cell,
+          .vtk_revolved_cell = 0,
+          .points_per_element = [](const Part&) { return SurfaceShapeTraits<N>::kPoints; },
+          .make = make_kernel_block<SurfaceMembraneKernel<N>>,
+          .check = [](const Model& m, const Part& p, const ElementBlock& b, int first) {
+            block_references<N>(m, p, b, first);
+          }};
+}
+
+}  // namespace tunica
