@@ -63,6 +63,7 @@ public:
 /// its longest edge at a Gauss point), folded (a quadrilateral whose normal
 /// g1 × g2 reverses between Gauss points), or if the direction rule gives a
 /// direction normal to the surface (see kMinTangentFraction) or not finite.
+/// Defined in membrane3d_impl.hpp, instantiated per shape (membrane3d.cpp: N = 3, 4).
 template <int N>
 MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, const DirectionRule& direction1);
 
