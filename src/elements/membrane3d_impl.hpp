@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace tunica {
 
@@ -32,9 +33,10 @@ MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, cons
   MembraneReference<N> ref;
   ref.thickness = H;
 
-  // Square of the longest edge (the scale of the degeneracy test).
+  // Square of the longest edge, corner to corner (the scale of the degeneracy test).
+  constexpr int kCorners = SurfaceShapeTraits<N>::kCorners;
   double L2 = 0;
-  for (int a = 0; a < N; ++a) L2 = std::max(L2, (X.col((a + 1) % N) - X.col(a)).squaredNorm());
+  for (int a = 0; a < kCorners; ++a) L2 = std::max(L2, (X.col((a + 1) % kCorners) - X.col(a)).squaredNorm());
 
   std::array<Eigen::Vector3d, Q> normal;  // G1 × G2 at each Gauss point
   for (int q = 0; q < Q; ++q) {
@@ -69,9 +71,9 @@ MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, cons
     ref.dNds[q] = dN * A.inverse();
     ref.weight[q] = wq * area * H;
   }
-  // Folded quadrilateral: the normal G1 × G2 reverses between Gauss points.
+  // Folded element (of more than one Gauss point): the normal G1 × G2 reverses between Gauss points.
   for (int q = 1; q < Q; ++q)
-    if (!(normal[q].dot(normal[0]) > 0)) throw BadElement("folded quadrilateral");
+    if (!(normal[q].dot(normal[0]) > 0)) throw BadElement(std::string("folded ") + SurfaceShapeTraits<N>::kName);
   return ref;
 }
 
