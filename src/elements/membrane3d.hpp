@@ -60,9 +60,11 @@ public:
 
 /// Reference data of an element with reference nodes X and thickness H.
 /// Throws BadElement if the element is degenerate (area ≤ 1e-12 × the square of
-/// its longest edge at a Gauss point), folded (a quadrilateral whose normal
-/// g1 × g2 reverses between Gauss points), or if the direction rule gives a
-/// direction normal to the surface (see kMinTangentFraction) or not finite.
+/// its longest edge, corner to corner, at a Gauss point), folded (an element of
+/// several Gauss points whose normal g1 × g2 reverses between them: "folded
+/// <shape name>"), or if the direction rule gives a direction normal to the
+/// surface (see kMinTangentFraction) or not finite.
+/// Defined in membrane3d_impl.hpp, instantiated per shape (membrane3d.cpp: N = 3, 4).
 template <int N>
 MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, const DirectionRule& direction1);
 

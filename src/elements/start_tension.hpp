@@ -15,7 +15,8 @@
 
 namespace tunica {
 
-/// K₀ of the element (3N × 3N, node-major DOFs), overwritten.
+/// K₀ of the element (3N × 3N, node-major DOFs), overwritten. Defined in start_tension_impl.hpp,
+/// instantiated per shape (start_tension.cpp: N = 3, 4).
 template <int N>
 void normal_tension_stiffness(const MembraneReference<N>& ref, double T0, ElementMatrix<N>& K);
 

@@ -1,4 +1,5 @@
-// Shape functions and Gauss rules of the 3-D membrane elements (surface_shape.hpp).
+// Shape functions and Gauss rules of the 3-D membrane elements (surface_shape.hpp;
+// theory manual §5.1).
 //  - 3-node triangle: N = (1 − ξ − η, ξ, η); one Gauss point at the centroid
 //    (⅓, ⅓), weight ½ (the parametric triangle's area); exact for linear integrands.
 //  - 4-node quadrilateral: nodes at (ξ_a, η_a) = (−1, −1), (1, −1), (1, 1), (−1, 1),
@@ -17,57 +18,47 @@ constexpr double kQuadXi[4] = {-1, 1, 1, -1};
 constexpr double kQuadEta[4] = {-1, -1, 1, 1};
 }  // namespace
 
-template <int N>
-void gauss_point(int q, double& xi, double& eta, double& weight) {
-  static_assert(N == 3 || N == 4);
-  if (q < 0 || q >= SurfaceShapeTraits<N>::kPoints) throw std::out_of_range("gauss_point: no such Gauss point");
-  if constexpr (N == 3) {
-    xi = eta = 1.0 / 3.0;
-    weight = 0.5;
-  } else {
-    const double g = 1.0 / std::sqrt(3.0);
-    xi = kQuadXi[q] * g;
-    eta = kQuadEta[q] * g;
-    weight = 1.0;
-  }
+void SurfaceShapeTraits<3>::gauss_point(int q, double& xi, double& eta, double& weight) {
+  if (q < 0 || q >= kPoints) throw std::out_of_range("gauss_point: no such Gauss point");
+  xi = eta = 1.0 / 3.0;
+  weight = 0.5;
 }
 
-template <int N>
-Eigen::Matrix<double, N, 1> shape_values(double xi, double eta) {
-  static_assert(N == 3 || N == 4);
-  Eigen::Matrix<double, N, 1> n;
-  if constexpr (N == 3) {
-    n << 1.0 - xi - eta, xi, eta;
-  } else {
-    for (int a = 0; a < 4; ++a) n(a) = 0.25 * (1.0 + kQuadXi[a] * xi) * (1.0 + kQuadEta[a] * eta);
-  }
+Eigen::Matrix<double, 3, 1> SurfaceShapeTraits<3>::values(double xi, double eta) {
+  Eigen::Matrix<double, 3, 1> n;
+  n << 1.0 - xi - eta, xi, eta;
   return n;
 }
 
-template <int N>
-Eigen::Matrix<double, N, 2> shape_derivatives(double xi, double eta) {
-  static_assert(N == 3 || N == 4);
-  Eigen::Matrix<double, N, 2> d;
-  if constexpr (N == 3) {
-    (void)xi;
-    (void)eta;
-    d << -1, -1,  //
-        1, 0,     //
-        0, 1;
-  } else {
-    for (int a = 0; a < 4; ++a) {
-      d(a, 0) = 0.25 * kQuadXi[a] * (1.0 + kQuadEta[a] * eta);  // ∂N_a/∂ξ
-      d(a, 1) = 0.25 * kQuadEta[a] * (1.0 + kQuadXi[a] * xi);   // ∂N_a/∂η
-    }
-  }
+Eigen::Matrix<double, 3, 2> SurfaceShapeTraits<3>::derivatives(double, double) {
+  Eigen::Matrix<double, 3, 2> d;
+  d << -1, -1,  //
+      1, 0,     //
+      0, 1;
   return d;
 }
 
-template void gauss_point<3>(int, double&, double&, double&);
-template void gauss_point<4>(int, double&, double&, double&);
-template Eigen::Matrix<double, 3, 1> shape_values<3>(double, double);
-template Eigen::Matrix<double, 4, 1> shape_values<4>(double, double);
-template Eigen::Matrix<double, 3, 2> shape_derivatives<3>(double, double);
-template Eigen::Matrix<double, 4, 2> shape_derivatives<4>(double, double);
+void SurfaceShapeTraits<4>::gauss_point(int q, double& xi, double& eta, double& weight) {
+  if (q < 0 || q >= kPoints) throw std::out_of_range("gauss_point: no such Gauss point");
+  const double g = 1.0 / std::sqrt(3.0);
+  xi = kQuadXi[q] * g;
+  eta = kQuadEta[q] * g;
+  weight = 1.0;
+}
+
+Eigen::Matrix<double, 4, 1> SurfaceShapeTraits<4>::values(double xi, double eta) {
+  Eigen::Matrix<double, 4, 1> n;
+  for (int a = 0; a < 4; ++a) n(a) = 0.25 * (1.0 + kQuadXi[a] * xi) * (1.0 + kQuadEta[a] * eta);
+  return n;
+}
+
+Eigen::Matrix<double, 4, 2> SurfaceShapeTraits<4>::derivatives(double xi, double eta) {
+  Eigen::Matrix<double, 4, 2> d;
+  for (int a = 0; a < 4; ++a) {
+    d(a, 0) = 0.25 * kQuadXi[a] * (1.0 + kQuadEta[a] * eta);  // ∂N_a/∂ξ
+    d(a, 1) = 0.25 * kQuadEta[a] * (1.0 + kQuadXi[a] * xi);   // ∂N_a/∂η
+  }
+  return d;
+}
 
 }  // namespace tunica

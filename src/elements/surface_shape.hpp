@@ -1,15 +1,27 @@
 #pragma once
-// Isoparametric shape functions and quadrature of the 3-D membrane elements:
-// the 3-node triangle (ξ, η ≥ 0, ξ + η ≤ 1; N = (1−ξ−η, ξ, η); one Gauss point
-// at the centroid, weight ½) and the 4-node quadrilateral (ξ, η ∈ [−1, 1];
-// bilinear N; 2 × 2 Gauss points, weights 1). Node order is counterclockwise
-// seen from the side the surface normal g1 × g2 points to.
+// Isoparametric shape functions and quadrature of the 3-D membrane elements
+// (theory manual §5.1): the 3-node triangle (ξ, η ≥ 0, ξ + η ≤ 1; N = (1−ξ−η, ξ, η);
+// one Gauss point at the centroid, weight ½) and the 4-node quadrilateral
+// (ξ, η ∈ [−1, 1]; bilinear N; 2 × 2 Gauss points, weights 1). Node order is
+// counterclockwise seen from the side the surface normal g1 × g2 points to.
+//
+// A shape is a specialization SurfaceShapeTraits<N> (N its number of nodes) with
+//   kNodes = N, kPoints (Gauss points), kCorners (its first kCorners nodes are the
+//   corners, counterclockwise), kName (in messages: "folded <kName>"),
+//   static void gauss_point(int q, double& xi, double& eta, double& weight)
+//     (throws std::out_of_range unless 0 ≤ q < kPoints),
+//   static Eigen::Matrix<double, N, 1> values(double xi, double eta),
+//   static Eigen::Matrix<double, N, 2> derivatives(double xi, double eta)
+//     (column 0 = ∂N/∂ξ, column 1 = ∂N/∂η).
+// The element and load kernels are templates on N that use nothing else of the shape;
+// a new shape is its own header declaring the specialization (e.g. tri6_shape.hpp), and
+// code that instantiates the kernels for it includes that header.
 #include <Eigen/Dense>
 #include <array>
 
 namespace tunica {
 
-/// Element shapes of 3-D membrane meshes.
+/// Element shapes of 3-D membrane meshes (tri3, quad4; not needed by the generic code).
 enum class SurfaceShape { tri3, quad4 };
 
 template <int N>
@@ -19,24 +31,40 @@ template <>
 struct SurfaceShapeTraits<3> {
   static constexpr int kNodes = 3;
   static constexpr int kPoints = 1;  ///< Gauss points
+  static constexpr int kCorners = 3;
+  static constexpr const char* kName = "triangle";
   static constexpr SurfaceShape kShape = SurfaceShape::tri3;
+  static void gauss_point(int q, double& xi, double& eta, double& weight);
+  static Eigen::Matrix<double, 3, 1> values(double xi, double eta);
+  static Eigen::Matrix<double, 3, 2> derivatives(double xi, double eta);
 };
 
 template <>
 struct SurfaceShapeTraits<4> {
   static constexpr int kNodes = 4;
   static constexpr int kPoints = 4;
+  static constexpr int kCorners = 4;
+  static constexpr const char* kName = "quadrilateral";
   static constexpr SurfaceShape kShape = SurfaceShape::quad4;
+  static void gauss_point(int q, double& xi, double& eta, double& weight);
+  static Eigen::Matrix<double, 4, 1> values(double xi, double eta);
+  static Eigen::Matrix<double, 4, 2> derivatives(double xi, double eta);
 };
 
 /// Gauss point q of an N-node element: parametric coordinates and weight.
 template <int N>
-void gauss_point(int q, double& xi, double& eta, double& weight);
+inline void gauss_point(int q, double& xi, double& eta, double& weight) {
+  SurfaceShapeTraits<N>::gauss_point(q, xi, eta, weight);
+}
 /// Shape functions at (ξ, η).
 template <int N>
-Eigen::Matrix<double, N, 1> shape_values(double xi, double eta);
+inline Eigen::Matrix<double, N, 1> shape_values(double xi, double eta) {
+  return SurfaceShapeTraits<N>::values(xi, eta);
+}
 /// Parametric derivatives: column 0 = ∂N/∂ξ, column 1 = ∂N/∂η.
 template <int N>
-Eigen::Matrix<double, N, 2> shape_derivatives(double xi, double eta);
+inline Eigen::Matrix<double, N, 2> shape_derivatives(double xi, double eta) {
+  return SurfaceShapeTraits<N>::derivatives(xi, eta);
+}
 
 }  // namespace tunica

@@ -23,7 +23,8 @@
 namespace tunica {
 
 /// External nodal force f (3N) of pressure p on the current element x and, if
-/// dfdx is given, ∂f/∂x (3N × 3N; the tangent gets −∂f/∂x).
+/// dfdx is given, ∂f/∂x (3N × 3N; the tangent gets −∂f/∂x). Defined, with enclosed_volume, in
+/// surface_pressure_impl.hpp, instantiated per shape (surface_pressure.cpp: N = 3, 4).
 template <int N>
 void surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& f, ElementMatrix<N>* dfdx);
 

@@ -1,14 +1,15 @@
 // Finite-difference and invariance checks of the 3-D membrane elements
-// (membrane3d.hpp), tri3 and quad4, over every registered material, each of its samples
+// (membrane3d.hpp), tri3, quad4 and tri6, over every registered material, each of its samples
 // and each of the sample's orientations (tests/support/material_registry.hpp):
 //  - the internal force (5.6) is the gradient of the stored energy Σ_q weight·Ŵ;
 //  - the tangent (5.6) is the Jacobian of the internal force, and is symmetric;
-// at random distorted, rotated, sheared current states of random warped
-// reference elements, with material directions not aligned with the edges, turned by the
-// sample's orientation; rigid rotations of reference, current state and
+// at random distorted, rotated, sheared current states of random distorted reference
+// elements (quad: warped; tri6: curved), with material directions not aligned with the
+// edges, turned by the sample's orientation; rigid rotations of reference, current state and
 // direction rule leave W, S, E, λ unchanged and rotate f and K; the Gauss-point
 // output is consistent (σ = F S Fᵀ tangent to the surface, its in-plane
-// principal values); bad reference elements throw BadElement.
+// principal values); bad reference elements throw BadElement (degenerate, folded, a
+// direction normal to the surface).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 
 #include "../support/fd.hpp"
 #include "../support/material_registry.hpp"
+#include "../support/six_node_triangle.hpp"
 #include "elements/membrane3d.hpp"
 
 using namespace tunica;
@@ -38,13 +40,15 @@ Eigen::Matrix3d random_rotation(std::mt19937& rng) {
   return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
 }
 
-/// A random reference element: a distorted (quad: warped, non-planar) element,
-/// randomly rotated and translated.
+/// A random reference element: a distorted (quad: warped, non-planar; tri6: curved, its
+/// mid-edge nodes off the chords, in and out of the plane) element, randomly rotated and translated.
 template <int N>
 SurfaceNodes<N> random_reference(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1, 1);
   SurfaceNodes<N> X;
-  if constexpr (N == 3) {
+  if constexpr (N == 6) {
+    return tunica::test::six_node_triangle(random_reference<3>(rng), Eigen::Vector3d::Constant(0.12), rng);
+  } else if constexpr (N == 3) {
     X << 0, 1.0, 0.3, 0, 0.1, 0.9, 0, 0, 0;
   } else {
     X << 0, 1.0, 1.1, -0.1, 0, 0, 0.9, 1.0, 0, 0, 0, 0;
@@ -194,6 +198,7 @@ TEST_P(Membrane3dFd, InternalForceIsEnergyGradientAndTangentIsItsJacobian) {
   double eg = 0, ek = 0, ea = 0;
   check_derivatives<3>(*m, GetParam().angle, rng, eg, ek, ea);
   check_derivatives<4>(*m, GetParam().angle, rng, eg, ek, ea);
+  check_derivatives<6>(*m, GetParam().angle, rng, eg, ek, ea);
   tunica::test::record_error("worst_relative_error_force", eg);
   tunica::test::record_error("worst_relative_error_tangent", ek);
   tunica::test::record_error("worst_asymmetry", ea);
@@ -203,30 +208,33 @@ TEST_P(Membrane3dFd, RigidRotationOfReferenceCurrentAndDirectionRuleRotatesForce
   std::mt19937 rng(12);
   check_rotation_invariance<3>(*m, GetParam().angle, rng);
   check_rotation_invariance<4>(*m, GetParam().angle, rng);
+  check_rotation_invariance<6>(*m, GetParam().angle, rng);
 }
 
-TEST(Membrane3d, GaussPointOutputIsConsistent) {
-  // σ = F S Fᵀ is symmetric and tangent to the current surface (σ n = 0); its
-  // nonzero eigenvalues are the in-plane principal stresses; σ_α = t_α·σ t_α;
-  // the material frame is orthonormal and tangent; x, X are the interpolated
-  // positions; E = ½(λ² − 1) on the diagonal; incompressibility λ3² det C = 1;
-  // h = λ3 H; weight = Gauss weight × |G1 × G2| × H.
-  std::mt19937 rng(13);
-  const auto m = material_from_yaml(kFung3d);
+namespace {
+
+// σ = F S Fᵀ is symmetric and tangent to the current surface (σ n = 0); its
+// nonzero eigenvalues are the in-plane principal stresses; σ_α = t_α·σ t_α;
+// the material frame is orthonormal and tangent; x, X are the interpolated
+// positions; E = ½(λ² − 1) on the diagonal; incompressibility λ3² det C = 1;
+// h = λ3 H; weight = Gauss weight × |G1 × G2| × H.
+template <int N>
+void check_output(const MembraneMaterial& material, std::mt19937& rng) {
+  constexpr int Q = SurfaceShapeTraits<N>::kPoints;
   for (int k = 0; k < 10; ++k) {
-    const SurfaceNodes<4> X = random_reference<4>(rng);
-    const SurfaceNodes<4> x = random_current<4>(rng, X);
+    const SurfaceNodes<N> X = random_reference<N>(rng);
+    const SurfaceNodes<N> x = random_current<N>(rng, X);
     const double H = 0.2;
-    const auto ref = membrane_reference<4>(X, H, direction_rule(k));
-    ElementVector<4> f;
-    std::array<MembranePoint, 4> pts;
-    membrane3d<4>(ref, x, *m, f, nullptr, &pts);
-    for (int q = 0; q < 4; ++q) {
+    const auto ref = membrane_reference<N>(X, H, direction_rule(k));
+    ElementVector<N> f;
+    std::array<MembranePoint, Q> pts;
+    membrane3d<N>(ref, x, material, f, nullptr, &pts);
+    for (int q = 0; q < Q; ++q) {
       const MembranePoint& p = pts[q];
       double xi, eta, w;
-      gauss_point<4>(q, xi, eta, w);
-      const Eigen::Vector4d Nq = shape_values<4>(xi, eta);
-      const Eigen::Matrix<double, 4, 2> dN = shape_derivatives<4>(xi, eta);
+      gauss_point<N>(q, xi, eta, w);
+      const Eigen::Matrix<double, N, 1> Nq = shape_values<N>(xi, eta);
+      const Eigen::Matrix<double, N, 2> dN = shape_derivatives<N>(xi, eta);
       EXPECT_LT((p.X - X * Nq).norm(), 1e-14);
       EXPECT_LT((p.x - x * Nq).norm(), 1e-14);
       EXPECT_DOUBLE_EQ(p.R, std::hypot(p.X(0), p.X(1)));
@@ -262,7 +270,7 @@ TEST(Membrane3d, GaussPointOutputIsConsistent) {
       EXPECT_NEAR(p.sigma_principal(0), std::max(nz[0], nz[1]), 1e-12 * p.cauchy.norm());
       EXPECT_NEAR(p.sigma_principal(1), std::min(nz[0], nz[1]), 1e-12 * p.cauchy.norm());
       // σ_α along the convected directions f_α = F e_α: recompute F from the material frame.
-      const Eigen::Matrix<double, 4, 2> dNds = ref.dNds[q];
+      const Eigen::Matrix<double, N, 2> dNds = ref.dNds[q];
       for (int a = 0; a < 2; ++a) {
         const Eigen::Vector3d t = (x * dNds.col(a)).normalized();
         EXPECT_NEAR(p.sigma(a), t.dot(p.cauchy * t), 1e-12 * p.cauchy.norm());
@@ -270,6 +278,15 @@ TEST(Membrane3d, GaussPointOutputIsConsistent) {
       }
     }
   }
+}
+
+}  // namespace
+
+TEST(Membrane3d, GaussPointOutputIsConsistent) {
+  std::mt19937 rng(13);
+  const auto m = material_from_yaml(kFung3d);
+  check_output<4>(*m, rng);
+  check_output<6>(*m, rng);
 }
 
 TEST(Membrane3d, EquibiaxialStretchOfANeoHookeanPatch) {
@@ -344,6 +361,19 @@ TEST(Membrane3d, BadElementsThrow) {
   tri << 0, 1, 0, 0, 0, 1, 0, 0, 0;
   SurfaceNodes<4> quad;
   quad << 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0;
+  // 6-node triangles: all six nodes on one line; mid-edge node 4 moved from (½, ½) to (−0.2, −0.2),
+  // so that det ∂X/∂ξ = 1 − 2.8(ξ + η) is positive at the Gauss points near corner 0 and negative
+  // at those near the mid-edge nodes.
+  const auto six = [](const SurfaceNodes<3>& c) {
+    SurfaceNodes<6> X;
+    X << c, 0.5 * (c.col(0) + c.col(1)), 0.5 * (c.col(1) + c.col(2)), 0.5 * (c.col(2) + c.col(0));
+    return X;
+  };
+  expect_bad([&] { membrane_reference<6>(six(collinear), 0.1, rule); }, "degenerate element (zero area)");
+  SurfaceNodes<6> folded6 = six(tri);
+  folded6.col(4) << -0.2, -0.2, 0;
+  expect_bad([&] { membrane_reference<6>(folded6, 0.1, rule); }, "folded 6-node triangle");
+  EXPECT_NO_THROW(membrane_reference<6>(six(tri), 0.1, rule));
   const DirectionRule normal = [](const Eigen::Vector3d&, const Eigen::Vector3d& n) { return Eigen::Vector3d(2 * n); };
   const DirectionRule nearly_normal = [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
     return Eigen::Vector3d(1e-4, 0, 1);
@@ -359,6 +389,7 @@ TEST(Membrane3d, BadElementsThrow) {
   for (const DirectionRule* r : {&normal, &nearly_normal, &zero, &nan, &inf}) {
     expect_bad([&] { membrane_reference<3>(tri, 0.1, *r); }, dir);
     expect_bad([&] { membrane_reference<4>(quad, 0.1, *r); }, dir);
+    expect_bad([&] { membrane_reference<6>(six(tri), 0.1, *r); }, dir);
   }
   // Just outside the cone of kMinTangentFraction: accepted.
   const DirectionRule steep = [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return Eigen::Vector3d(2e-3, 0, 1); };

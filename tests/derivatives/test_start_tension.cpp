@@ -1,8 +1,10 @@
 // The normal-tension stiffness of the stress-free start (elements/start_tension.hpp,
 // System::add_start_stiffness):
-//  - K₀ against the closed form T₀ ∫ ∇N_a·∇N_b dA (n nᵀ) on a flat right triangle and a square;
-//  - symmetric and positive semidefinite on warped, rotated elements, with no stiffness against
-//    rigid translations, uniform normal motion of a flat element, or in-plane motion of it;
+//  - K₀ against the closed form T₀ ∫ ∇N_a·∇N_b dA (n nᵀ) on a flat right triangle (3 and 6
+//    nodes) and a square;
+//  - symmetric and positive semidefinite on warped (quad4) and curved (tri6), rotated elements,
+//    with no stiffness against rigid translations; on flat elements (tri3, tri6) none against
+//    uniform normal motion or in-plane motion;
 //  - the vector System::add_start_stiffness returns, K₀ d, has K₀ as its finite-difference
 //    Jacobian (it is the gradient of the quadratic ½ dᵀ K₀ d), on the free DOFs of a sphere octant.
 #include <gtest/gtest.h>
@@ -11,6 +13,7 @@
 #include <random>
 
 #include "../support/fd.hpp"
+#include "../support/six_node_triangle.hpp"
 #include "../support/sphere_octant.hpp"
 #include "assembly/system.hpp"
 #include "elements/start_tension.hpp"
@@ -21,6 +24,73 @@ using namespace tunica;
 namespace {
 
 const DirectionRule kAlongX = [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return Eigen::Vector3d(1, 0, 0); };
+
+/// K₀ of a flat element in z = 0 is T₀ L (L_ab = ∫ ∇N_a·∇N_b dA) on the z components, zero elsewhere.
+template <int N>
+void expect_normal_block(const ElementMatrix<N>& K, double T0, const Eigen::Matrix<double, N, N>& L) {
+  for (int a = 0; a < N; ++a)
+    for (int b = 0; b < N; ++b)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          EXPECT_NEAR(K(3 * a + i, 3 * b + j), (i == 2 && j == 2) ? T0 * L(a, b) : 0.0, 1e-14) << a << b << i << j;
+}
+
+/// Symmetric, positive semidefinite, no stiffness against a rigid translation: 20 random rotated
+/// elements near the unit square (quad4, warped) or the right triangle (tri6: curved).
+template <int N>
+void check_random_elements(std::mt19937& rng) {
+  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Matrix3d Q = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
+    SurfaceNodes<N> X;
+    if constexpr (N == 4) {
+      X << 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0;
+      for (int a = 0; a < 4; ++a) X.col(a) += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+    } else {
+      SurfaceNodes<3> corners;
+      corners << 0, 1, 0, 0, 0, 1, 0, 0, 0;
+      for (int a = 0; a < 3; ++a) {
+        // One draw per statement: the evaluation order of function arguments is unspecified.
+        const double dx = jitter(rng);
+        const double dy = jitter(rng);
+        const double dz = jitter(rng);
+        corners.col(a) += Eigen::Vector3d(dx, dy, dz);
+      }
+      X = test::six_node_triangle(corners, Eigen::Vector3d::Constant(0.1), rng);
+    }
+    X = Q * X;
+    const MembraneReference<N> ref = membrane_reference<N>(X, 0.1, kAlongX);
+    ElementMatrix<N> K;
+    normal_tension_stiffness<N>(ref, 1.7, K);
+    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * K.cwiseAbs().maxCoeff());
+    const Eigen::SelfAdjointEigenSolver<ElementMatrix<N>> eig(K);
+    EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-12 * eig.eigenvalues().maxCoeff());
+    ElementVector<N> t;
+    for (int a = 0; a < N; ++a) t.template segment<3>(3 * a) = Q.col(0) + 2 * Q.col(2);
+    EXPECT_LT((K * t).norm(), 1e-12 * K.norm() * t.norm()) << "rigid translation";
+  }
+}
+
+/// A flat element X in z = 0: no stiffness against a uniform normal motion or any in-plane
+/// motion; node `bumped` moved out of the plane is resisted.
+template <int N>
+void check_flat_element(const SurfaceNodes<N>& X, int bumped) {
+  const MembraneReference<N> ref = membrane_reference<N>(X, 0.1, kAlongX);
+  ElementMatrix<N> K;
+  normal_tension_stiffness<N>(ref, 3.0, K);
+  ElementVector<N> w = ElementVector<N>::Zero(), inplane = ElementVector<N>::Zero();
+  const double moves[6][2] = {{0.3, -0.2}, {1.1, 0.4}, {-0.7, 0.5}, {0.2, 0.9}, {-0.4, -0.6}, {0.8, 0.1}};
+  for (int a = 0; a < N; ++a) {
+    w(3 * a + 2) = 1;
+    inplane.template segment<2>(3 * a) = Eigen::Vector2d(moves[a][0], moves[a][1]);
+  }
+  EXPECT_LT((K * w).norm(), 1e-14 * K.norm());
+  EXPECT_LT((K * inplane).norm(), 1e-14 * K.norm());
+  ElementVector<N> bump = ElementVector<N>::Zero();
+  bump(3 * bumped + 2) = 1;
+  EXPECT_GT(bump.dot(K * bump), 0.1 * K.norm());
+}
 
 }  // namespace
 
@@ -36,11 +106,29 @@ TEST(StartTension, FlatRightTriangleMatchesTheClosedForm) {
   Eigen::Matrix3d L;
   L << 2, -1, -1, -1, 1, 0, -1, 0, 1;
   L *= 0.5;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          EXPECT_NEAR(K(3 * a + i, 3 * b + j), (i == 2 && j == 2) ? T0 * L(a, b) : 0.0, 1e-14) << a << b << i << j;
+  expect_normal_block<3>(K, T0, L);
+}
+
+TEST(StartTension, FlatRightSixNodeTriangleMatchesTheClosedForm) {
+  // The same triangle with mid-edge nodes at the midpoints: the quadratic N (5.7) have
+  // ∫ ∇N_a·∇N_b dA = ⅙ [[6, 1, 1, −4, 0, −4], [1, 3, 0, −4, 0, 0], [1, 0, 3, 0, 0, −4],
+  // [−4, −4, 0, 16, −8, 0], [0, 0, 0, −8, 16, −8], [−4, 0, −4, 0, −8, 16]] (integrand of degree 2:
+  // exact with the 6-point rule).
+  SurfaceNodes<6> X;
+  X << 0, 1, 0, 0.5, 0.5, 0, 0, 0, 1, 0, 0.5, 0.5, 0, 0, 0, 0, 0, 0;
+  const MembraneReference<6> ref = membrane_reference<6>(X, 0.3, kAlongX);
+  const double T0 = 2.5;
+  ElementMatrix<6> K;
+  normal_tension_stiffness<6>(ref, T0, K);
+  Eigen::Matrix<double, 6, 6> L;
+  L << 6, 1, 1, -4, 0, -4,  //
+      1, 3, 0, -4, 0, 0,    //
+      1, 0, 3, 0, 0, -4,    //
+      -4, -4, 0, 16, -8, 0,  //
+      0, 0, 0, -8, 16, -8,  //
+      -4, 0, -4, 0, -8, 16;
+  L /= 6;
+  expect_normal_block<6>(K, T0, L);
 }
 
 TEST(StartTension, FlatUnitSquareMatchesTheClosedForm) {
@@ -61,38 +149,14 @@ TEST(StartTension, FlatUnitSquareMatchesTheClosedForm) {
 
 TEST(StartTension, SymmetricSemidefiniteAndBlindToRigidAndUniformNormalMotion) {
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> jitter(-0.15, 0.15);
-  std::normal_distribution<double> g;
-  for (int trial = 0; trial < 20; ++trial) {
-    const Eigen::Matrix3d Q = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
-    SurfaceNodes<4> X;
-    X << 0, 1, 1, 0, 0, 0, 1, 1, 0, 0, 0, 0;
-    for (int a = 0; a < 4; ++a) X.col(a) += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
-    X = Q * X;
-    const MembraneReference<4> ref = membrane_reference<4>(X, 0.1, kAlongX);
-    ElementMatrix<4> K;
-    normal_tension_stiffness<4>(ref, 1.7, K);
-    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-14 * K.cwiseAbs().maxCoeff());
-    const Eigen::SelfAdjointEigenSolver<ElementMatrix<4>> eig(K);
-    EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-12 * eig.eigenvalues().maxCoeff());
-    ElementVector<4> t;
-    for (int a = 0; a < 4; ++a) t.segment<3>(3 * a) = Q.col(0) + 2 * Q.col(2);
-    EXPECT_LT((K * t).norm(), 1e-12 * K.norm() * t.norm()) << "rigid translation";
-  }
-  // A flat element: no stiffness against a uniform normal motion or any in-plane motion.
+  check_random_elements<4>(rng);
+  check_random_elements<6>(rng);
   SurfaceNodes<3> X;
   X << 0, 1.3, 0.2, 0, 0.1, 0.9, 0, 0, 0;
-  const MembraneReference<3> ref = membrane_reference<3>(X, 0.1, kAlongX);
-  ElementMatrix<3> K;
-  normal_tension_stiffness<3>(ref, 3.0, K);
-  ElementVector<3> w, inplane;
-  w << 0, 0, 1, 0, 0, 1, 0, 0, 1;
-  inplane << 0.3, -0.2, 0, 1.1, 0.4, 0, -0.7, 0.5, 0;
-  EXPECT_LT((K * w).norm(), 1e-14 * K.norm());
-  EXPECT_LT((K * inplane).norm(), 1e-14 * K.norm());
-  ElementVector<3> bump = ElementVector<3>::Zero();
-  bump(5) = 1;  // node 1 out of the plane: resisted
-  EXPECT_GT(bump.dot(K * bump), 0.1 * K.norm());
+  check_flat_element<3>(X, 1);
+  // The same triangle with 6 nodes, the mid-edge nodes off the midpoints in the plane.
+  std::mt19937 rng6(8);
+  check_flat_element<6>(test::six_node_triangle(X, Eigen::Vector3d(0.1, 0.1, 0), rng6), 3);
 }
 
 TEST(StartTension, SystemVectorIsTheGradientOfTheQuadraticWhoseHessianItAdds) {

@@ -1,20 +1,24 @@
 // Checks of the 3-D follower pressure and the enclosed volume (surface_pressure.hpp):
 //  - per element, ∂f/∂x and ∂V_e/∂x (about a point and about an axis) against
-//    finite differences (relative error below 1e-6), tri3 and quad4;
+//    finite differences (relative error below 1e-6), tri3, quad4 and tri6;
 //  - on closed surfaces (octahedron of triangles, cube of quadrilaterals and
-//    its triangulation, all with perturbed nodes) the assembled pressure force
-//    is p ∂V/∂x and the assembled load stiffness is symmetric;
-//  - exact volumes: unit cube, tetrahedron, a warped cube (= the trilinear
-//    hexahedron's volume), and, about an axis, an open prism (polygon area × length).
+//    its triangulation, octahedron of 6-node triangles, all with perturbed nodes: the
+//    last one curved) the assembled pressure force is p ∂V/∂x and the assembled load
+//    stiffness is symmetric;
+//  - exact volumes: unit cube, tetrahedron, octahedron (also of straight-edged 6-node
+//    triangles), a warped cube (= the trilinear hexahedron's volume), and, about an axis,
+//    an open prism (polygon area × length).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <numbers>
 #include <random>
 #include <vector>
 
 #include "../support/fd.hpp"
+#include "elements/tri6_shape.hpp"
 #include "loads/surface_pressure.hpp"
 
 using namespace tunica;
@@ -38,11 +42,13 @@ Eigen::VectorXd flat(const SurfaceNodes<N>& x) {
   return Eigen::Map<const Eigen::VectorXd>(x.data(), 3 * N);
 }
 
-/// A closed (or open) surface mesh: nodes and outward-oriented triangles and quadrilaterals.
+/// A closed (or open) surface mesh: nodes and outward-oriented triangles, quadrilaterals and
+/// 6-node triangles.
 struct Mesh {
   std::vector<Eigen::Vector3d> nodes;
   std::vector<std::array<int, 3>> tris;
   std::vector<std::array<int, 4>> quads;
+  std::vector<std::array<int, 6>> tri6s;
 };
 
 template <int N>
@@ -72,6 +78,7 @@ double mesh_volume(const Mesh& m, const Eigen::VectorXd& pos, const VolumeMeasur
   };
   for (const auto& t : m.tris) add(t);
   for (const auto& q : m.quads) add(q);
+  for (const auto& t : m.tri6s) add(t);
   return V;
 }
 
@@ -95,6 +102,7 @@ void mesh_pressure(const Mesh& m, const Eigen::VectorXd& pos, double p, Eigen::V
   };
   for (const auto& t : m.tris) add(t);
   for (const auto& q : m.quads) add(q);
+  for (const auto& t : m.tri6s) add(t);
 }
 
 /// Regular octahedron |x| + |y| + |z| = 1 of eight outward triangles.
@@ -133,6 +141,22 @@ Mesh triangulated(const Mesh& q) {
   return m;
 }
 
+/// The triangles of t as 6-node triangles (same orientation), a node at the midpoint of each edge.
+Mesh quadratic(const Mesh& t) {
+  Mesh m;
+  m.nodes = t.nodes;
+  std::map<std::pair<int, int>, int> mid;
+  const auto midpoint = [&](int a, int b) {
+    const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+    const auto [it, added] = mid.emplace(key, static_cast<int>(m.nodes.size()));
+    if (added) m.nodes.push_back(0.5 * (t.nodes[a] + t.nodes[b]));
+    return it->second;
+  };
+  for (const auto& c : t.tris)
+    m.tri6s.push_back({c[0], c[1], c[2], midpoint(c[0], c[1]), midpoint(c[1], c[2]), midpoint(c[2], c[0])});
+  return m;
+}
+
 void perturb(Mesh& m, std::mt19937& rng, double amount) {
   std::uniform_real_distribution<double> u(-amount, amount);
   for (auto& x : m.nodes) x += Eigen::Vector3d(u(rng), u(rng), u(rng));
@@ -166,10 +190,12 @@ SurfaceNodes<N> random_element(std::mt19937& rng) {
   SurfaceNodes<N> x;
   if constexpr (N == 3) {
     x << 0, 1.0, 0.3, 0, 0.1, 0.9, 0, 0, 0;
+  } else if constexpr (N == 6) {  // the triangle above with its mid-edge nodes
+    x << 0, 1.0, 0.3, 0.5, 0.65, 0.15, 0, 0.1, 0.9, 0.05, 0.5, 0.45, 0, 0, 0, 0, 0, 0;
   } else {
     x << 0, 1.0, 1.1, -0.1, 0, 0, 0.9, 1.0, 0, 0, 0, 0;
   }
-  x += 0.2 * SurfaceNodes<N>::NullaryExpr([&] { return u(rng); });  // warped
+  x += 0.2 * SurfaceNodes<N>::NullaryExpr([&] { return u(rng); });  // warped (tri6: curved)
   x = random_rotation(rng) * x;
   x.colwise() += Eigen::Vector3d(u(rng), u(rng), u(rng));
   return x;
@@ -214,6 +240,7 @@ TEST(SurfacePressure, LoadStiffnessAndVolumeGradientMatchFiniteDifferences) {
   double df = 0, dv = 0;
   check_element_derivatives<3>(rng, df, dv);
   check_element_derivatives<4>(rng, df, dv);
+  check_element_derivatives<6>(rng, df, dv);
   std::cout << "surface_pressure: max FD relative error: load stiffness " << df << ", volume gradient " << dv
             << "\n";
 }
@@ -224,7 +251,9 @@ TEST(SurfacePressure, PressureOnAClosedSurfaceIsPressureTimesVolumeGradientAndIt
   perturb(oct, rng, 0.15);
   perturb(box, rng, 0.15);
   const Mesh tribox = triangulated(box);
-  for (const Mesh* m : std::initializer_list<const Mesh*>{&oct, &box, &tribox}) {
+  Mesh oct6 = quadratic(octahedron());
+  perturb(oct6, rng, 0.15);  // corners and mid-edge nodes: curved faces
+  for (const Mesh* m : std::initializer_list<const Mesh*>{&oct, &box, &tribox, &oct6}) {
     const Eigen::VectorXd pos = positions(*m);
     const double p = 1.3;
     Eigen::VectorXd F, G;
@@ -259,6 +288,8 @@ TEST(SurfacePressure, VolumesOfClosedPolyhedraAreExact) {
     EXPECT_NEAR(mesh_volume(triangulated(box), positions(box), how), 1.0, 1e-14);
     const Mesh oct = octahedron();
     EXPECT_NEAR(mesh_volume(oct, positions(oct), how), 4.0 / 3.0, 1e-14);
+    const Mesh oct6 = quadratic(oct);
+    EXPECT_NEAR(mesh_volume(oct6, positions(oct6), how), 4.0 / 3.0, 1e-14);
     Mesh tet;
     tet.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     tet.tris = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};

@@ -1,0 +1,148 @@
+#pragma once
+// Definitions of the 3-D membrane element templates (membrane3d.hpp; theory manual §5.1, (5.5)–(5.6);
+// §2 for the material response). Equations, per Gauss point q with Gauss weight w_q:
+//   reference:  G_α = Σ_a X_a ∂N_a/∂ξ^α,  n = G1 × G2 / |G1 × G2|,
+//               dA₀ = |G1 × G2| dξ dη,
+//               e1 = t/|t|, t = d − (d·n) n, d = DirectionRule(X_q, n);  e2 = n × e1,
+//               A_iα = e_i·G_α,  ∂N_a/∂s_i = Σ_α ∂N_a/∂ξ^α (A⁻¹)_αi,
+//               weight = w_q |G1 × G2| H;
+//   current:    f_i = Σ_a x_a ∂N_a/∂s_i,  C_ij = f_i·f_j,  E = ½(C − I),
+//               (S, D) = membrane_response(material, (C11, C22, C12)),
+//               B_a = [∂N_a/∂s_1 f1ᵀ; ∂N_a/∂s_2 f2ᵀ; ∂N_a/∂s_2 f1ᵀ + ∂N_a/∂s_1 f2ᵀ]
+//                     (δx_a ↦ (δE11, δE22, 2δE12)),
+//               f_a += weight B_aᵀ S                (= Σ_ij S_ij f_i ∂N_a/∂s_j),
+//               K_ab += weight [B_aᵀ D B_b + (Σ_ij S_ij ∂N_a/∂s_i ∂N_b/∂s_j) I₃];
+//   output:     σ = Σ_ij S_ij f_i f_jᵀ = F S Fᵀ (J = 1), σ_α = t_α·σ t_α with
+//               t_α = f_α/|f_α|, principal values of σ restricted to the
+//               current tangent plane, λ_α = √C_αα, λ₃ = √C33, h = λ₃ H.
+//
+// Included only by the files that instantiate them for a shape (membrane3d.cpp: tri3 and
+// quad4; a new shape: its own file); every other file includes membrane3d.hpp.
+#include "elements/membrane3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace tunica {
+
+template <int N>
+MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, const DirectionRule& direction1) {
+  constexpr int Q = SurfaceShapeTraits<N>::kPoints;
+  MembraneReference<N> ref;
+  ref.thickness = H;
+
+  // Square of the longest edge, corner to corner (the scale of the degeneracy test).
+  constexpr int kCorners = SurfaceShapeTraits<N>::kCorners;
+  double L2 = 0;
+  for (int a = 0; a < kCorners; ++a) L2 = std::max(L2, (X.col((a + 1) % kCorners) - X.col(a)).squaredNorm());
+
+  std::array<Eigen::Vector3d, Q> normal;  // G1 × G2 at each Gauss point
+  for (int q = 0; q < Q; ++q) {
+    double xi, eta, wq;
+    gauss_point<N>(q, xi, eta, wq);
+    const Eigen::Matrix<double, N, 2> dN = shape_derivatives<N>(xi, eta);
+    const Eigen::Matrix<double, 3, 2> G = X * dN;  // G_α = ∂X/∂ξ^α
+    normal[q] = G.col(0).cross(G.col(1));
+    const double area = normal[q].norm();  // dA₀/(dξ dη)
+    // Degenerate: |G1 × G2| ≤ 1e-12 × (longest edge)² (the area element per unit
+    // parametric area: twice the area of a triangle, about a quarter of a
+    // quadrilateral's); the negated test also catches non-finite X.
+    if (!(area > 1e-12 * L2)) throw BadElement("degenerate element (zero area)");
+    const Eigen::Vector3d n = normal[q] / area;
+
+    ref.shape[q] = shape_values<N>(xi, eta);
+    ref.X[q] = X * ref.shape[q];
+
+    // Material frame: e1 = tangent projection of the wanted direction 1, normalized; e2 = n × e1.
+    const Eigen::Vector3d d = direction1(ref.X[q], n);
+    const Eigen::Vector3d t = d - d.dot(n) * n;
+    const double tn = t.norm();
+    if (!d.allFinite() || !(tn > kMinTangentFraction * d.norm()))
+      throw BadElement("material direction 1 is normal to the surface (or not finite)");
+    ref.e1[q] = t / tn;
+    ref.e2[q] = n.cross(ref.e1[q]);
+
+    // A_iα = e_i·G_α; ∂N/∂s = ∂N/∂ξ A⁻¹ (det A = |G1 × G2| > 0: (e1, e2, n) is right-handed).
+    Eigen::Matrix2d A;
+    A << ref.e1[q].dot(G.col(0)), ref.e1[q].dot(G.col(1)),  //
+        ref.e2[q].dot(G.col(0)), ref.e2[q].dot(G.col(1));
+    ref.dNds[q] = dN * A.inverse();
+    ref.weight[q] = wq * area * H;
+  }
+  // Folded element (of more than one Gauss point): the normal G1 × G2 reverses between Gauss points.
+  for (int q = 1; q < Q; ++q)
+    if (!(normal[q].dot(normal[0]) > 0)) throw BadElement(std::string("folded ") + SurfaceShapeTraits<N>::kName);
+  return ref;
+}
+
+template <int N>
+void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const MembraneMaterial& material,
+                ElementVector<N>& f, ElementMatrix<N>* K,
+                std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints>* points) {
+  constexpr int Q = SurfaceShapeTraits<N>::kPoints;
+  f.setZero();
+  if (K) K->setZero();
+  for (int q = 0; q < Q; ++q) {
+    const Eigen::Matrix<double, N, 2>& dN = ref.dNds[q];
+    const Eigen::Matrix<double, 3, 2> F = x * dN;  // columns f_i = ∂x/∂s_i
+    const Eigen::Vector3d f1 = F.col(0), f2 = F.col(1);
+    const Eigen::Vector3d C(f1.squaredNorm(), f2.squaredNorm(), f1.dot(f2));
+    if (!(C(0) * C(1) - C(2) * C(2) > 0))
+      throw std::domain_error("3-D membrane: in-plane det C is not positive at a Gauss point (element collapsed)");
+    const MembraneResponse m = membrane_response(material, C);
+    const double w = ref.weight[q];
+
+    // B: δx ↦ (δE11, δE22, 2δE12), node-major columns.
+    Eigen::Matrix<double, 3, 3 * N> B;
+    for (int a = 0; a < N; ++a) {
+      B.template block<1, 3>(0, 3 * a) = dN(a, 0) * f1.transpose();
+      B.template block<1, 3>(1, 3 * a) = dN(a, 1) * f2.transpose();
+      B.template block<1, 3>(2, 3 * a) = dN(a, 1) * f1.transpose() + dN(a, 0) * f2.transpose();
+    }
+    f.noalias() += w * (B.transpose() * m.S);
+    if (K) {
+      // Material part Bᵀ D B and geometric part (∂N_a/∂s · S ∂N_b/∂s) I₃.
+      const Eigen::Matrix<double, 3, 3 * N> DB = m.D * B;
+      // lazyProduct: a coefficient-wise fixed-size product (the default for 3N×3×3N would
+      // go through the dynamic-size GEMM kernel, half of this function's cost).
+      K->noalias() += w * B.transpose().lazyProduct(DB);
+      Eigen::Matrix2d S2;
+      S2 << m.S(0), m.S(2), m.S(2), m.S(1);
+      const Eigen::Matrix<double, N, N> Gm = dN * S2 * dN.transpose();
+      for (int a = 0; a < N; ++a)
+        for (int b = 0; b < N; ++b)
+          for (int k = 0; k < 3; ++k) (*K)(3 * a + k, 3 * b + k) += w * Gm(a, b);
+    }
+    if (points) {
+      MembranePoint& p = (*points)[q];
+      p.X = ref.X[q];
+      p.x = x * ref.shape[q];
+      p.R = std::hypot(p.X.x(), p.X.y());
+      p.r = std::hypot(p.x.x(), p.x.y());
+      p.z = p.x.z();
+      p.lambda = Eigen::Vector3d(std::sqrt(C(0)), std::sqrt(C(1)), std::sqrt(m.C33));
+      p.E = Eigen::Vector3d(0.5 * (C(0) - 1.0), 0.5 * (C(1) - 1.0), 0.5 * C(2));
+      p.S = m.S;
+      Eigen::Matrix2d S2;
+      S2 << m.S(0), m.S(2), m.S(2), m.S(1);
+      p.cauchy = F * S2 * F.transpose();  // σ = F S Fᵀ / J, J = 1
+      // σ_α = t_α·σ t_α = (f_α·σ f_α)/C_αα.
+      p.sigma = Eigen::Vector2d(f1.dot(p.cauchy * f1) / C(0), f2.dot(p.cauchy * f2) / C(1));
+      // Principal values in the current tangent plane: σ in the orthonormal basis (t1, t2').
+      const Eigen::Vector3d t1 = f1 / std::sqrt(C(0));
+      const Eigen::Vector3d t2 = (f2 - f2.dot(t1) * t1).normalized();
+      const double s11 = t1.dot(p.cauchy * t1), s22 = t2.dot(p.cauchy * t2), s12 = t1.dot(p.cauchy * t2);
+      const double mean = 0.5 * (s11 + s22), rad = std::hypot(0.5 * (s11 - s22), s12);
+      p.sigma_principal = Eigen::Vector2d(mean + rad, mean - rad);
+      p.e1 = ref.e1[q];
+      p.e2 = ref.e2[q];
+      p.thickness = p.lambda(2) * ref.thickness;
+      p.W = m.W;
+      p.weight = w;
+    }
+  }
+}
+
+}  // namespace tunica
