@@ -40,6 +40,11 @@ enum class ElementKind { axisym2, tri3, quad4, solid4, shell2 };
 constexpr int nodes_per_element(ElementKind k) {
   return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2 : k == ElementKind::tri3 ? 3 : 4;
 }
+/// True for the 3-D membrane kinds: surface elements in space.
+constexpr bool is_surface_kind(ElementKind k) { return k == ElementKind::tri3 || k == ElementKind::quad4; }
+/// The corner nodes of an element, the first ones of its node order: the vertices of its
+/// straight-sided shape (a higher-order element lists its other nodes after them).
+constexpr int corner_nodes(ElementKind k) { return k == ElementKind::tri3 ? 3 : nodes_per_element(k); }
 /// The VTK cell type (vtkCellType.h) of an element as its nodes lie: in the (r, z) plane for the
 /// axisymmetric kinds, in space for the 3-D membranes. std::logic_error for a kind without one.
 std::uint8_t vtk_cell_type(ElementKind k);
