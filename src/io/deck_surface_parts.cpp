@@ -39,8 +39,8 @@ const ComponentSpec& gmsh_mesh_spec() {
       "A physical surface of a Gmsh file: a mesh (.msh 4.1 or 2.2, ASCII or binary, read as data) or a "
       "geometry script (.geo, meshed in 2-D when read, only with --allow-scripts: a script can run commands). "
       "Parts that name the same file share its nodes. Its physical curves and points become node sets "
-      "under their own names. Linear triangles and quadrilaterals only; their node order gives the "
-      "side pressure acts on.",
+      "under their own names. Linear (3-node) and quadratic (6-node, Mesh.ElementOrder = 2) triangles "
+      "and linear quadrilaterals; their node order gives the side pressure acts on.",
       {required(text("file", "path of the .msh or .geo file, relative to the deck")),
        required(text("surface", "name of the physical surface"))}};
   return s;
@@ -91,10 +91,15 @@ void add_set(Model& m, const std::string& name, std::vector<int> nodes, const De
 void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, bool directions, Part& part,
                 const std::string& file = "") {
   if (!s.triangles.empty()) {
+    // Quadratic triangles: the corners, then the mid-edge nodes (model.hpp, ElementKind::tri6).
+    const bool quadratic = !s.triangle_midsides.empty();
     ElementBlock b;
-    b.kind = ElementKind::tri3;
-    for (const auto& t : s.triangles)
-      for (int n : t) b.nodes.push_back(global[n]);
+    b.kind = quadratic ? ElementKind::tri6 : ElementKind::tri3;
+    for (std::size_t e = 0; e < s.triangles.size(); ++e) {
+      for (int n : s.triangles[e]) b.nodes.push_back(global[n]);
+      if (quadratic)
+        for (int n : s.triangle_midsides[e]) b.nodes.push_back(global[n]);
+    }
     if (directions) b.direction = s.triangle_direction;
     b.tags = s.triangle_tags;
     b.file = file;

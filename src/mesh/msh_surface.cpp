@@ -231,14 +231,22 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
            printable(s.name));
     for (std::size_t e : members) {
       const auto& el = f.elements[e];
-      if (el.type == 2) s.tri.push_back(e);
-      else if (el.type == 3) s.quad.push_back(e);
-      else {
+      if (el.type == 2 || el.type == 9) {
+        // A surface's triangles are all linear or all quadratic (Gmsh meshes one order at a time).
+        if (!s.tri.empty() && f.elements[s.tri.front()].type != el.type)
+          fail(fmt::format("physical surface '{}' mixes 3-node (type 2) and 6-node (type 9) triangles ({}): mesh it "
+                           "with one Mesh.ElementOrder",
+                           printable(s.name), element_ref(el)),
+               el.line, printable(s.name));
+        s.tri.push_back(e);
+      } else if (el.type == 3) {
+        s.quad.push_back(e);
+      } else {
         const MshElementType t = msh_element_type(el.type);
-        fail(fmt::format("physical surface '{}': {} is a {} (type {}); Tunica reads 3-node triangles (type 2) and "
-                         "4-node quadrangles (type 3){}",
+        fail(fmt::format("physical surface '{}': {} is a {} (type {}); Tunica reads 3-node and 6-node triangles "
+                         "(types 2 and 9) and 4-node quadrangles (type 3){}",
                          printable(s.name), element_ref(el), t.name, el.type,
-                         t.dim == 2 ? ": mesh with Mesh.ElementOrder = 1" : ""),
+                         t.dim == 2 ? ": mesh with Mesh.ElementOrder = 1, or 2 with triangles only" : ""),
              el.line, printable(s.name));
       }
     }
@@ -325,6 +333,8 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     for (std::size_t e : s.tri) {
       const auto& el = f.elements[e];
       out.triangles.push_back({compact[node_of(el, 0)], compact[node_of(el, 1)], compact[node_of(el, 2)]});
+      if (el.type == 9)
+        out.triangle_midsides.push_back({compact[node_of(el, 3)], compact[node_of(el, 4)], compact[node_of(el, 5)]});
       out.triangle_tags.push_back(el.tag);
     }
     for (std::size_t e : s.quad) {

@@ -1,6 +1,6 @@
 #pragma once
 // Surface meshes for 3-D membrane parts: node positions, named surfaces made
-// of 3-node triangles and 4-node quadrilaterals (node order counterclockwise
+// of 3-node or 6-node triangles and 4-node quadrilaterals (node order counterclockwise
 // about the surface normal), and named node sets (symmetry planes, edges,
 // physical curves and points). Built by the generators (tube, sphere, sphere
 // octant) or read from Gmsh files (gmsh_reader.hpp).
@@ -17,6 +17,9 @@ struct SurfaceMesh {
     std::string name;
     std::vector<std::array<int, 3>> triangles;
     std::vector<std::array<int, 4>> quads;
+    /// Quadratic triangles: per triangle, its mid-edge nodes on edges 0–1, 1–2, 2–0 (the triangle's
+    /// corners are `triangles`); empty for linear triangles. A surface's triangles are all of one order.
+    std::vector<std::array<int, 3>> triangle_midsides;
     /// Optional per-element direction-1 vectors (empty, or one per triangle / quad).
     std::vector<Eigen::Vector3d> triangle_direction, quad_direction;
     /// Element tags as written in the mesh file (empty for generated meshes), one per triangle / quad.

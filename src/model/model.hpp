@@ -36,9 +36,23 @@ enum class Geometry { axisymmetric, three_d };
 /// Element kinds: the 2-node axisymmetric membrane, the 3-node triangle and the 4-node quadrilateral
 /// membrane, and the 4-node axisymmetric solid (a quadrilateral in the (r, z) plane, elements/axisym_solid.hpp).
 /// shell2: the 2-node axisymmetric Kirchhoff–Love shell (elements/axisym_shell.hpp), 4 unknowns per node.
-enum class ElementKind { axisym2, tri3, quad4, solid4, shell2 };
+/// tri6: the 6-node quadratic triangle membrane (elements/tri6_shape.hpp; corners, then the mid-edge
+/// nodes of edges 0–1, 1–2, 2–0, as Gmsh's type 9).
+enum class ElementKind { axisym2, tri3, quad4, solid4, shell2, tri6 };
 constexpr int nodes_per_element(ElementKind k) {
-  return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2 : k == ElementKind::tri3 ? 3 : 4;
+  return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2
+         : k == ElementKind::tri3                              ? 3
+         : k == ElementKind::tri6                              ? 6
+                                                               : 4;
+}
+/// True for the 3-D membrane kinds: surface elements in space.
+constexpr bool is_surface_kind(ElementKind k) {
+  return k == ElementKind::tri3 || k == ElementKind::quad4 || k == ElementKind::tri6;
+}
+/// The corner nodes of an element, the first ones of its node order: the vertices of its
+/// straight-sided shape (a higher-order element lists its other nodes after them).
+constexpr int corner_nodes(ElementKind k) {
+  return k == ElementKind::tri3 || k == ElementKind::tri6 ? 3 : nodes_per_element(k);
 }
 /// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
 struct ElementBlock {

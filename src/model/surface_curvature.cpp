@@ -40,8 +40,8 @@ std::vector<std::vector<double>> element_mean_curvature(const Model& model, cons
   std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> pairs;  // elements sharing an edge
   for (std::size_t b = 0; b < part.blocks.size(); ++b) {
     const ElementBlock& block = part.blocks[b];
-    if (block.kind != ElementKind::tri3 && block.kind != ElementKind::quad4) continue;
-    const int n = nodes_per_element(block.kind);
+    if (!is_surface_kind(block.kind)) continue;
+    const int n = corner_nodes(block.kind);
     H[b].assign(block.size(), 0.0);
     shared[b].assign(block.size(), 0.0);
     facets[b].resize(block.size());
@@ -50,7 +50,7 @@ std::vector<std::vector<double>> element_mean_curvature(const Model& model, cons
   for (std::size_t b = 0; b < part.blocks.size(); ++b) {
     const ElementBlock& block = part.blocks[b];
     if (facets[b].empty()) continue;
-    const int n = nodes_per_element(block.kind);
+    const int n = corner_nodes(block.kind);
     for (int e = 0; e < block.size(); ++e) {
       const int* en = block.element(e);
       for (int a = 0; a < n; ++a) {

@@ -14,7 +14,7 @@
 // gives the side), and θ_e is signed: positive where the surface bends away from the side its
 // normals point to, (n_f − n_e)·(c_f − c_e) > 0 with c the centroids (a sphere with outward
 // normals: H_e = 1/R to O(h²) on quadrilaterals and on triangles alike). 0 for a facet with no
-// shared edge.
+// shared edge. A higher-order element's facet is that of its corner nodes (corner_nodes, model.hpp).
 #include <vector>
 
 #include "model/model.hpp"

@@ -210,12 +210,12 @@ TEST(BadMeshes, TunicaMeshRefusesWhatIsNotAScriptOrNotAMeshFileAndBadResults) {
   EXPECT_EQ(o.exit_code, 2) << o.output;
   EXPECT_NE(o.output.find("not a regular file"), std::string::npos) << o.output;
   // A script whose mesh decks could not use: refused, nothing written.
-  std::ofstream(dir / "order2.geo") << "Mesh.ElementOrder = 2;\n" << square;
-  o = run_cli("mesh " + (dir / "order2.geo").string() + " -o " + (dir / "order2.msh").string());
+  std::ofstream(dir / "order3.geo") << "Mesh.ElementOrder = 3;\n" << square;
+  o = run_cli("mesh " + (dir / "order3.geo").string() + " -o " + (dir / "order3.msh").string());
   EXPECT_EQ(o.exit_code, 2) << o.output;
-  EXPECT_NE(o.output.find("order2.geo: key 'wall': physical surface 'wall': element"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("order3.geo: key 'wall': physical surface 'wall': element"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("nothing was written"), std::string::npos) << o.output;
-  EXPECT_FALSE(fs::exists(dir / "order2.msh"));
+  EXPECT_FALSE(fs::exists(dir / "order3.msh"));
   // A script that exits before Gmsh writes anything: named, not the temporary file.
   std::ofstream(dir / "exits.geo") << square << "Exit;\n";
   o = run_cli("mesh " + (dir / "exits.geo").string() + " -o " + (dir / "exits.msh").string());

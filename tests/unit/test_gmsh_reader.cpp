@@ -183,13 +183,14 @@ TEST(GmshReader, NoPhysicalSurface) {
   EXPECT_TRUE(contains(e.reason(), "the file defines no physical surface")) << e.what();
 }
 
-TEST(GmshReader, SecondOrderElementsAreRefused) {
-  const std::string path = write("order2.geo", quarter_cylinder_geo("Mesh.ElementOrder = 2;\n"));
+TEST(GmshReader, ThirdOrderElementsAreRefused) {
+  const std::string path = write("order3.geo", quarter_cylinder_geo("Mesh.ElementOrder = 3;\n"));
   const InputError e = input_error([&] { read_script(path); });
   EXPECT_EQ(e.where().file, path);
   EXPECT_EQ(e.where().key, "wall");
-  EXPECT_TRUE(contains(e.reason(), "is a 6-node second-order triangle (type 9); Tunica reads 3-node triangles (type "
-                                   "2) and 4-node quadrangles (type 3): mesh with Mesh.ElementOrder = 1"))
+  EXPECT_TRUE(contains(e.reason(), "is a 10-node third-order triangle (type 21); Tunica reads 3-node and 6-node "
+                                   "triangles (types 2 and 9) and 4-node quadrangles (type 3): mesh with "
+                                   "Mesh.ElementOrder = 1, or 2 with triangles only"))
       << e.what();
 }
 
