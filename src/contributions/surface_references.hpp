@@ -1,6 +1,9 @@
 #pragma once
 // Reference data of the 3-D membrane elements of a part (membrane3d.hpp):
 // material frames from the part's frame rule, shape derivatives, weights.
+#include <fmt/format.h>
+
+#include <string>
 #include <vector>
 
 #include "elements/membrane3d.hpp"
@@ -12,10 +15,35 @@ namespace tunica {
 DirectionRule direction_rule(const Model& model, const FrameRule& frame, const ElementBlock& block, int e);
 
 /// Reference data of every element of a 3-D block of N-node elements. Throws
-/// BadElement whose message names the element (0-based within the part, in
-/// block order) and says what is wrong.
+/// BadElement whose message names the element (as in the mesh file, else 0-based within
+/// the part, in block order) and says what is wrong.
 template <int N>
 std::vector<MembraneReference<N>> block_references(const Model& model, const Part& part, const ElementBlock& block,
-                                                   int first_element);
+                                                   int first_element) {
+  std::vector<MembraneReference<N>> out;
+  out.reserve(block.size());
+  SurfaceNodes<N> X;
+  for (int e = 0; e < block.size(); ++e) {
+    const int* n = block.element(e);
+    for (int a = 0; a < N; ++a) X.col(a) = model.X[n[a]];
+    try {
+      out.push_back(membrane_reference<N>(X, part.thickness, direction_rule(model, part.frame, block, e)));
+    } catch (const BadElement& err) {
+      // Named as in the mesh file where the elements come from one, else by 0-based index.
+      const bool from_file = static_cast<int>(block.tags.size()) == block.size();
+      std::string nodes;
+      for (int a = 0; a < N; ++a) {
+        const long tag = n[a] < static_cast<int>(model.node_tags.size()) ? model.node_tags[n[a]] : 0;
+        nodes += fmt::format("{}{}", a ? ", " : "", from_file && tag > 0 ? tag : n[a]);
+      }
+      if (from_file)
+        throw BadElement(fmt::format("{}: element {} ({}, nodes {}): {}", block.file, block.tags[e],
+                                     std::string("a ") + SurfaceShapeTraits<N>::kName, nodes, err.what()));
+      throw BadElement(fmt::format("element {} ({}, nodes {}): {}", first_element + e, SurfaceShapeTraits<N>::kName,
+                                   nodes, err.what()));
+    }
+  }
+  return out;
+}
 
 }  // namespace tunica

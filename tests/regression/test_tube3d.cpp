@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "../support/capture.hpp"
+#include "../support/fung_tube.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -25,22 +26,8 @@ namespace {
 
 const std::string kDeck = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml";
 
-// Independent closed form (theory manual (3.2), (8.1)).
-constexpr double c = 61.163, a1 = 0.68238, a2 = 0.60558, a4 = 0.1067;  // kPa
-constexpr double R = 0.763, H = 0.122, lz = 1.6;                          // mm
-constexpr double mmHg_kPa = 0.133322387415;
-
-double S1(double E1, double E2) { return 2 * c * (a1 * E1 + a4 * E2) * std::exp(a1 * E1 * E1 + a2 * E2 * E2 + 2 * a4 * E1 * E2); }
-double S2(double E1, double E2) { return 2 * c * (a4 * E1 + a2 * E2) * std::exp(a1 * E1 * E1 + a2 * E2 * E2 + 2 * a4 * E1 * E2); }
-
-double solve_E_theta(double target, double Ez) {
-  double lo = -0.49, hi = 3.0;
-  for (int k = 0; k < 200; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (S1(mid, Ez) < target ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
+// Independent closed form (theory manual (3.2), (8.1)): tests/support/fung_tube.hpp.
+using namespace fung_tube;
 
 struct Errors {
   double hoop = 0;       ///< largest relative error of λθ, Sθ, Sz, h against the closed form of radius R

@@ -3,9 +3,11 @@
 // H = 0.122 mm), length 2πR, ends free to slide radially (held on the planes x = 0 and y = 0
 // against rigid motion), circumferential/axial frame, staggered triangles (around = along),
 // stretched axially to λz = 1.3 with 40 mmHg in 4 increments, then inflated to 120 mmHg.
-// Shared by bench/bench.cpp (which includes it by its relative path) and the tests.
+// Shared by bench/bench.cpp (which includes it by its relative path) and the tests. Also the
+// closed form of the rat aorta's thin tube (theory manual (3.2), (8.1)): namespace fung_tube.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -42,3 +44,30 @@ output: {{vtk: false}}
 }
 
 }  // namespace tunica::test
+
+// The rat aorta's data (examples/rat-aorta-3d.yaml) and the thin tube's hoop stretch at a given
+// hoop stress (theory manual (3.2), (8.1)).
+namespace tunica::test::fung_tube {
+
+constexpr double c = 61.163, a1 = 0.68238, a2 = 0.60558, a4 = 0.1067;  // kPa
+constexpr double R = 0.763, H = 0.122, lz = 1.6;                          // mm
+constexpr double mmHg_kPa = 0.133322387415;
+
+inline double S1(double E1, double E2) {
+  return 2 * c * (a1 * E1 + a4 * E2) * std::exp(a1 * E1 * E1 + a2 * E2 * E2 + 2 * a4 * E1 * E2);
+}
+inline double S2(double E1, double E2) {
+  return 2 * c * (a4 * E1 + a2 * E2) * std::exp(a1 * E1 * E1 + a2 * E2 * E2 + 2 * a4 * E1 * E2);
+}
+
+/// E_θ with S1(E_θ, E_z) = target (bisection).
+inline double solve_E_theta(double target, double Ez) {
+  double lo = -0.49, hi = 3.0;
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (S1(mid, Ez) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace tunica::test::fung_tube

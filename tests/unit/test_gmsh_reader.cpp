@@ -183,6 +183,28 @@ TEST(GmshReader, NoPhysicalSurface) {
   EXPECT_TRUE(contains(e.reason(), "the file defines no physical surface")) << e.what();
 }
 
+TEST(GmshReader, SecondOrderTrianglesAreReadWithTheirMidEdgeNodesOnTheSurface) {
+  // Mesh.ElementOrder = 2: 6-node triangles (type 9), corners in `triangles`, mid-edge nodes alongside,
+  // placed by Gmsh on the curved surface.
+  const SurfaceMesh m = read_script(write("order2.geo", quarter_cylinder_geo("Mesh.ElementOrder = 2;\n")));
+  ASSERT_EQ(m.surfaces.size(), 1u);
+  const auto& s = m.surfaces[0];
+  ASSERT_FALSE(s.triangles.empty());
+  ASSERT_EQ(s.triangle_midsides.size(), s.triangles.size());
+  EXPECT_EQ(s.triangle_tags.size(), s.triangles.size());
+  double worst = 0;
+  for (std::size_t e = 0; e < s.triangles.size(); ++e)
+    for (int a = 0; a < 3; ++a) {
+      const Vector3d& mid = m.nodes[s.triangle_midsides[e][a]];
+      const Vector3d chord = 0.5 * (m.nodes[s.triangles[e][a]] + m.nodes[s.triangles[e][(a + 1) % 3]]);
+      worst = std::max(worst, std::abs(std::hypot(mid(0), mid(1)) - 1.0));
+      EXPECT_LT((mid - chord).norm(), 0.1);  // near the edge's chord midpoint, pushed out onto the cylinder
+    }
+  EXPECT_LT(worst, 1e-9);  // R = 1
+  // The physical curves' node sets hold the mid-edge nodes of their 3-node lines too.
+  EXPECT_EQ(m.node_sets.at("bottom").size() % 2, 1u);
+}
+
 TEST(GmshReader, ThirdOrderElementsAreRefused) {
   const std::string path = write("order3.geo", quarter_cylinder_geo("Mesh.ElementOrder = 3;\n"));
   const InputError e = input_error([&] { read_script(path); });

@@ -147,6 +147,7 @@ TEST(VtkCellTypes, ComeFromTheElementKindAndAnUnknownKindIsAnError) {
   EXPECT_EQ(vtk_cell_type(ElementKind::tri3), 5);
   EXPECT_EQ(vtk_cell_type(ElementKind::quad4), 9);
   EXPECT_EQ(vtk_cell_type(ElementKind::solid4), 9);
+  EXPECT_EQ(vtk_cell_type(ElementKind::tri6), 22);  // VTK_QUADRATIC_TRIANGLE
   EXPECT_EQ(vtk_revolved_cell_type(ElementKind::axisym2), 9);
   EXPECT_EQ(vtk_revolved_cell_type(ElementKind::solid4), 12);
   EXPECT_THROW(vtk_revolved_cell_type(ElementKind::tri3), std::logic_error);
@@ -166,7 +167,8 @@ TEST(ElementTypes, EveryKindIsRegisteredOnceWithTheModelsNodeCount) {
     EXPECT_TRUE(static_cast<bool>(t->points_per_element)) << t->name;
     EXPECT_FALSE(t->name.empty());
   }
-  for (ElementKind k : {ElementKind::axisym2, ElementKind::tri3, ElementKind::quad4, ElementKind::solid4, ElementKind::shell2})
+  for (ElementKind k : {ElementKind::axisym2, ElementKind::tri3, ElementKind::quad4, ElementKind::solid4, ElementKind::shell2,
+                        ElementKind::tri6})
     EXPECT_EQ(kinds.count(k), 1u) << static_cast<int>(k);
   ElementType again = element_type(ElementKind::tri3);
   EXPECT_THROW(register_element_type(again), std::logic_error);
