@@ -188,8 +188,9 @@ TEST(MshReader, MixedOrderElementsAreRefusedNeverDropped) {
   });
   EXPECT_EQ(e.where().line, 22);
   EXPECT_EQ(e.where().key, "wall");
-  EXPECT_TRUE(contains(e.reason(), "physical surface 'wall': element 3 (line 22) is a 6-node second-order triangle "
-                                   "(type 9)"))
+  // Linear and quadratic triangles in one surface: refused (a surface is meshed at one order).
+  EXPECT_TRUE(contains(e.reason(), "physical surface 'wall' mixes 3-node (type 2) and 6-node (type 9) triangles "
+                                   "(element 3 (line 22))"))
       << e.what();
 }
 
