@@ -44,6 +44,13 @@ struct SurfaceShapeTraits<6> {
     weight = q < 3 ? wb : wa;
   }
 
+  /// Parametric coordinates of node a (the fold check of membrane_reference looks at every node).
+  static void node(int a, double& xi, double& eta) {
+    constexpr double kXi[6] = {0, 1, 0, 0.5, 0.5, 0}, kEta[6] = {0, 0, 1, 0, 0.5, 0.5};
+    xi = kXi[a];
+    eta = kEta[a];
+  }
+
   static Eigen::Matrix<double, 6, 1> values(double xi, double eta) {
     const double l = 1.0 - xi - eta;
     Eigen::Matrix<double, 6, 1> n;

@@ -374,6 +374,13 @@ TEST(Membrane3d, BadElementsThrow) {
   folded6.col(4) << -0.2, -0.2, 0;
   expect_bad([&] { membrane_reference<6>(folded6, 0.1, rule); }, "folded 6-node triangle");
   EXPECT_NO_THROW(membrane_reference<6>(six(tri), 0.1, rule));
+  // Mid-edge node 3 at (0.2, 0): along edge 0–1, ∂x/∂ξ = 2.4ξ − 0.2 is negative for ξ < 1/12 only, between
+  // corner 0 and the nearest Gauss point (ξ = 0.0916): folded at node 0, not at a Gauss point.
+  SurfaceNodes<6> corner_fold = six(tri);
+  corner_fold.col(3) << 0.2, 0, 0;
+  expect_bad([&] { membrane_reference<6>(corner_fold, 0.1, rule); }, "folded 6-node triangle: its surface turns over at node 0");
+  corner_fold.col(3) << 0.26, 0, 0;  // beyond the quarter point: ∂x/∂ξ = 1.92ξ + 0.04 > 0 everywhere on the edge
+  EXPECT_NO_THROW(membrane_reference<6>(corner_fold, 0.1, rule));
   const DirectionRule normal = [](const Eigen::Vector3d&, const Eigen::Vector3d& n) { return Eigen::Vector3d(2 * n); };
   const DirectionRule nearly_normal = [](const Eigen::Vector3d&, const Eigen::Vector3d&) {
     return Eigen::Vector3d(1e-4, 0, 1);
