@@ -18,8 +18,10 @@
 //
 // Mesh size: lc = 0.6 mm gives about 5000 linear triangles. Refine by lowering lc,
 // e.g. on the command line `gmsh -2 -setnumber lc 0.3 aneurysm.geo` (about 4 times as
-// many triangles; the count grows as 1/lc^2). Keep Mesh.ElementOrder = 1 (Tunica reads
-// 3-node triangles and 4-node quadrangles only); for quadrangles add `Recombine Surface{:};`.
+// many triangles; the count grows as 1/lc^2). Mesh.ElementOrder = 2 gives 6-node curved
+// triangles, far more accurate for their nodes (docs/user-guide.md §3.1); Tunica reads
+// 3-node and 6-node triangles and 4-node quadrangles (for those add `Recombine Surface{:};`
+// and keep order 1).
 
 DefineConstant[ lc = {0.6, Name "Parameters/mesh size lc (mm)"} ];
 R0 = 2;      // parent artery radius (mm)

@@ -7,7 +7,8 @@
 // (all DOFs, so reactions can be read) and of K = ∂R/∂u (free DOFs only) as the
 // sum of the contributions: one BlockContribution per block of elements, built by
 // its element type (contributions/element_type.hpp), the held DOFs of parts that
-// enter later, and the contact pairs. System never looks at an element kind.
+// enter later, and the contact pairs. System does not dispatch on the element kind: it asks the
+// kind's registered type for its nodes and unknowns per node.
 //
 // Parts that enter in a later step (Part::enter_step, Model::part_active): while a
 // part is inactive its elements, the pressure loads on it and its contact pairs are

@@ -21,6 +21,7 @@
 // entries of R and K, so no locks are needed and every entry receives its contributions in
 // the same order whatever the number of threads: results are identical bit for bit.
 #include <exception>
+#include <stdexcept>
 #include <vector>
 
 #include "contributions/element_type.hpp"
@@ -65,7 +66,16 @@ public:
 
   explicit KernelBlock(BlockContext ctx)
       : model_(ctx.model), block_(ctx.block), kernel_(ctx), layout_(std::move(ctx.layout)),
-        curvature_(std::move(ctx.curvature)) {}
+        curvature_(std::move(ctx.curvature)) {
+    // The registration, the model's kind and the kernel must agree on the element's size: the
+    // scatter positions are laid out from the registration, the loop indexes them with kDofs.
+    const ElementType& type = element_type(block_.kind);
+    if (Kernel::kNodes != nodes_per_element(block_.kind) || Kernel::kUnknowns != type.unknowns_per_node ||
+        Kernel::kSolid != type.solid ||
+        layout_.scatter.size() != static_cast<std::size_t>(block_.size()) * kDofs * kDofs ||
+        (Kernel::kStartStiffness && curvature_.size() != static_cast<std::size_t>(block_.size())))
+      throw std::logic_error("element type " + type.name + ": its kernel, registration and layout disagree");
+  }
 
   void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
                 double& scale2) const override {

@@ -22,6 +22,9 @@ void BlockContribution::solid_points(const Eigen::VectorXd&, std::vector<SolidPo
 
 void register_element_type(ElementType type) {
   const ElementKind kind = type.kind;
+  if (type.nodes != nodes_per_element(kind))
+    throw std::logic_error(fmt::format("element type {} declares {} nodes, the model's kind has {}", type.name,
+                                       type.nodes, nodes_per_element(kind)));
   if (!registry().emplace(kind, std::move(type)).second)
     throw std::logic_error(fmt::format("element kind {} registered twice", static_cast<int>(kind)));
 }

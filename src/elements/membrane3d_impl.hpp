@@ -75,7 +75,9 @@ MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, cons
   }
   // Folded element (of more than one Gauss point): the normal G1 × G2 reverses between Gauss points.
   for (int q = 1; q < Q; ++q)
-    if (!(normal[q].dot(normal[0]) > 0)) throw BadElement(std::string("folded ") + SurfaceShapeTraits<N>::kName);
+    if (!(normal[q].dot(normal[0]) > 0))
+      throw BadElement(std::string("folded ") + SurfaceShapeTraits<N>::kName +
+                       ": its normal reverses between its Gauss points (a node on the wrong side of the element?)");
   // A shape with nodes besides its corners (mid-edge nodes) can fold between its Gauss points, near a
   // corner: the normal is also checked at every node (SurfaceShapeTraits::node, where it declares it).
   if constexpr (requires(double xi, double eta) { SurfaceShapeTraits<N>::node(0, xi, eta); }) {
@@ -84,9 +86,11 @@ MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, cons
       SurfaceShapeTraits<N>::node(a, xi, eta);
       const Eigen::Matrix<double, 3, 2> G = X * shape_derivatives<N>(xi, eta);
       if (!(G.col(0).cross(G.col(1)).dot(normal[0]) > 0))
-        throw BadElement(fmt::format("folded {}: its surface turns over at node {} (a mid-edge node too far from the "
-                                     "middle of its edge?)",
-                                     SurfaceShapeTraits<N>::kName, a));
+        throw BadElement(fmt::format("folded {}: its surface turns over at its {} node, the {} in its list (a mid-edge "
+                                     "node too far from the middle of its edge?)",
+                                     SurfaceShapeTraits<N>::kName,
+                                     a < SurfaceShapeTraits<N>::kCorners ? "corner" : "mid-edge",
+                                     std::array{"1st", "2nd", "3rd", "4th", "5th", "6th", "7th", "8th", "9th"}[std::min(a, 8)]));
     }
   }
   return ref;

@@ -39,8 +39,8 @@ const ComponentSpec& part_spec() {
       "A body: its element type, material, reference thickness, mesh and (3-D) material frame. "
       "`axisymmetric_membrane` parts (2-node elements on a meridian in the (r, z) plane) get the node sets "
       "`<part>.start`, `<part>.end` and `<part>.all`; `axisymmetric_shell` parts likewise, with their own "
-      "quadrature keys (see `parts` (type `axisymmetric_shell`)); `membrane` parts (3-node triangles and 4-node "
-      "quadrilaterals in 3-D) get `<part>.all` and their generator's sets as `<part>.<set>`, or the "
+      "quadrature keys (see `parts` (type `axisymmetric_shell`)); `membrane` parts (3-node triangles, 4-node "
+      "quadrilaterals and 6-node triangles in 3-D) get `<part>.all` and their generator's sets as `<part>.<set>`, or the "
       "physical curves and points of their Gmsh file; `axisymmetric_solid` parts have their own keys "
       "(see `parts` (type `axisymmetric_solid`)). A deck's parts are all axisymmetric (membranes and "
       "solids) or all 3-D. A part with `enter_step` takes part from that step on (see the user guide).",

@@ -7,8 +7,8 @@
 // which the command line's --allow-scripts does.
 //
 // Physical surfaces become SurfaceMesh surfaces, physical curves and points node
-// sets; only 3-node triangles and 4-node quadrilaterals are accepted on physical
-// surfaces. An element-data view with 3 components named `direction_view` gives
+// sets; only 3-node and 6-node triangles and 4-node quadrilaterals are accepted on
+// physical surfaces. An element-data view with 3 components named `direction_view` gives
 // per-element direction-1 vectors.
 #include <string>
 

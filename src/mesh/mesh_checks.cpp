@@ -24,7 +24,8 @@ struct ElementView {
   }
   std::string name(int e) const {
     const int nt = static_cast<int>(s.triangles.size());
-    if (e < nt && static_cast<int>(s.triangle_tags.size()) == nt) return fmt::format("element {} (a triangle)", s.triangle_tags[e]);
+    const char* tri = s.triangle_midsides.empty() ? "a triangle" : "a 6-node triangle";
+    if (e < nt && static_cast<int>(s.triangle_tags.size()) == nt) return fmt::format("element {} ({})", s.triangle_tags[e], tri);
     if (e >= nt && s.quad_tags.size() == s.quads.size()) return fmt::format("element {} (a quadrilateral)", s.quad_tags[e - nt]);
     return e < nt ? fmt::format("element {} (triangle {})", e, e)
                   : fmt::format("element {} (quadrilateral {})", e, e - nt);
@@ -66,6 +67,60 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
       for (std::size_t b = a + 1; b < v.size(); ++b)
         if (v[a] == v[b])
           return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), ev.node(v[a]), ev.list(v));
+  }
+
+  // 1b. Quadratic triangles: their mid-edge nodes in range, distinct from the corners and from each other
+  // (checked with the corners above), not a corner of any element, and shared: two triangles on one
+  // corner-to-corner edge name the same mid-edge node (else the surface is not conforming: a gap opens
+  // along the edge, or the nodes are listed in the wrong order).
+  if (!s.triangle_midsides.empty()) {
+    if (s.triangle_midsides.size() != s.triangles.size())
+      return where + fmt::format("{} quadratic triangles have mid-edge nodes, {} have corners",
+                                 s.triangle_midsides.size(), s.triangles.size());
+    std::vector<char> corner(static_cast<std::size_t>(num_nodes), 0);
+    for (int e = 0; e < ne; ++e)
+      for (int k : ev.nodes(e)) corner[k] = 1;
+    std::unordered_map<long long, std::pair<int, int>> mid_of;  // edge → (mid-edge node, element)
+    for (int e = 0; e < static_cast<int>(s.triangles.size()); ++e) {
+      const auto& c = s.triangles[e];
+      const auto& mid = s.triangle_midsides[e];
+      std::vector<int> all(c.begin(), c.end());
+      all.insert(all.end(), mid.begin(), mid.end());
+      for (int k : mid)
+        if (k < 0 || k >= num_nodes)
+          return where + fmt::format("{} has node index {} outside the mesh (nodes 0 to {})", ev.name(e), k, num_nodes - 1);
+      for (std::size_t a = 0; a < all.size(); ++a)
+        for (std::size_t b = a + 1; b < all.size(); ++b)
+          if (all[a] == all[b])
+            return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), ev.node(all[a]), ev.list(all));
+      for (int a = 0; a < 3; ++a) {
+        if (corner[mid[a]])
+          return where + fmt::format("{}: its mid-edge node {} (between nodes {} and {}) is a corner of an element; "
+                                     "its nodes are {} (corners first, then the mid-edge nodes of edges 1–2, 2–3, 3–1)",
+                                     ev.name(e), ev.node(mid[a]), ev.node(c[a]), ev.node(c[(a + 1) % 3]), ev.list(all));
+        // Near the middle of its edge: within half the edge's length of the chord's midpoint (a curved
+        // edge of Gmsh's bulges by about L²/8R; a node listed for another edge is farther).
+        const Eigen::Vector3d& p0 = mesh.nodes[c[a]];
+        const Eigen::Vector3d& p1 = mesh.nodes[c[(a + 1) % 3]];
+        const double off = (mesh.nodes[mid[a]] - 0.5 * (p0 + p1)).norm(), length = (p1 - p0).norm();
+        if (!(off <= 0.5 * length))
+          return where + fmt::format("{}: its mid-edge node {} is {:.3g} edge lengths from the middle of the edge "
+                                     "between nodes {} and {} (at most 0.5): are its nodes listed as corners first, "
+                                     "then the mid-edge nodes of edges 1–2, 2–3, 3–1? Its nodes are {}",
+                                     ev.name(e), ev.node(mid[a]), length > 0 ? off / length : off, ev.node(c[a]),
+                                     ev.node(c[(a + 1) % 3]), ev.list(all));
+        const int lo = std::min(c[a], c[(a + 1) % 3]), hi = std::max(c[a], c[(a + 1) % 3]);
+        const long long key = static_cast<long long>(lo) * num_nodes + hi;
+        const auto [it, fresh] = mid_of.emplace(key, std::make_pair(mid[a], e));
+        if (!fresh && it->second.first != mid[a])
+          return where + fmt::format("{} and {} share the edge between nodes {} and {} but not its mid-edge node ({} and "
+                                     "{}): the quadratic mesh is not conforming (a gap would open along the edge, or a "
+                                     "triangle lists its mid-edge nodes in the wrong order: corners first, then the "
+                                     "mid-edge nodes of edges 1–2, 2–3, 3–1)",
+                                     ev.name(it->second.second), ev.name(e), ev.node(lo), ev.node(hi),
+                                     ev.node(it->second.first), ev.node(mid[a]));
+      }
+    }
   }
 
   // 2. Degenerate elements. The area vector of a polygon x_0 … x_{m−1} is

@@ -243,9 +243,11 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
         s.quad.push_back(e);
       } else {
         const MshElementType t = msh_element_type(el.type);
-        fail(fmt::format("physical surface '{}': {} is a {} (type {}); Tunica reads 3-node and 6-node triangles "
+        const std::string name = t.name;
+        const bool vowel = name.rfind("8-", 0) == 0 || name.rfind("11-", 0) == 0 || name.rfind("18-", 0) == 0;
+        fail(fmt::format("physical surface '{}': {} is {} {} (type {}); Tunica reads 3-node and 6-node triangles "
                          "(types 2 and 9) and 4-node quadrangles (type 3){}",
-                         printable(s.name), element_ref(el), t.name, el.type,
+                         printable(s.name), element_ref(el), vowel ? "an" : "a", name, el.type,
                          t.dim == 2 ? ": mesh with Mesh.ElementOrder = 1, or 2 with triangles only" : ""),
              el.line, printable(s.name));
       }

@@ -39,20 +39,43 @@ enum class Geometry { axisymmetric, three_d };
 /// tri6: the 6-node quadratic triangle membrane (elements/tri6_shape.hpp; corners, then the mid-edge
 /// nodes of edges 0–1, 1–2, 2–0, as Gmsh's type 9).
 enum class ElementKind { axisym2, tri3, quad4, solid4, shell2, tri6 };
+// The switches below have no default: a kind left out is a compiler warning (-Wswitch), and the
+// element registry checks its declaration against nodes_per_element (contributions/element_type.cpp).
 constexpr int nodes_per_element(ElementKind k) {
-  return k == ElementKind::axisym2 || k == ElementKind::shell2 ? 2
-         : k == ElementKind::tri3                              ? 3
-         : k == ElementKind::tri6                              ? 6
-                                                               : 4;
+  switch (k) {
+    case ElementKind::axisym2:
+    case ElementKind::shell2: return 2;
+    case ElementKind::tri3: return 3;
+    case ElementKind::quad4:
+    case ElementKind::solid4: return 4;
+    case ElementKind::tri6: return 6;
+  }
+  return 0;
 }
 /// True for the 3-D membrane kinds: surface elements in space.
 constexpr bool is_surface_kind(ElementKind k) {
-  return k == ElementKind::tri3 || k == ElementKind::quad4 || k == ElementKind::tri6;
+  switch (k) {
+    case ElementKind::tri3:
+    case ElementKind::quad4:
+    case ElementKind::tri6: return true;
+    case ElementKind::axisym2:
+    case ElementKind::shell2:
+    case ElementKind::solid4: return false;
+  }
+  return false;
 }
 /// The corner nodes of an element, the first ones of its node order: the vertices of its
 /// straight-sided shape (a higher-order element lists its other nodes after them).
 constexpr int corner_nodes(ElementKind k) {
-  return k == ElementKind::tri3 || k == ElementKind::tri6 ? 3 : nodes_per_element(k);
+  switch (k) {
+    case ElementKind::tri6: return 3;
+    case ElementKind::axisym2:
+    case ElementKind::shell2:
+    case ElementKind::tri3:
+    case ElementKind::quad4:
+    case ElementKind::solid4: return nodes_per_element(k);
+  }
+  return 0;
 }
 /// Elements of one kind in a part: connectivity, element e = nodes [n e, n (e + 1)).
 struct ElementBlock {

@@ -378,7 +378,7 @@ TEST(Membrane3d, BadElementsThrow) {
   // corner 0 and the nearest Gauss point (ξ = 0.0916): folded at node 0, not at a Gauss point.
   SurfaceNodes<6> corner_fold = six(tri);
   corner_fold.col(3) << 0.2, 0, 0;
-  expect_bad([&] { membrane_reference<6>(corner_fold, 0.1, rule); }, "folded 6-node triangle: its surface turns over at node 0");
+  expect_bad([&] { membrane_reference<6>(corner_fold, 0.1, rule); }, "folded 6-node triangle: its surface turns over at its corner node, the 1st in its list");
   corner_fold.col(3) << 0.26, 0, 0;  // beyond the quarter point: ∂x/∂ξ = 1.92ξ + 0.04 > 0 everywhere on the edge
   EXPECT_NO_THROW(membrane_reference<6>(corner_fold, 0.1, rule));
   const DirectionRule normal = [](const Eigen::Vector3d&, const Eigen::Vector3d& n) { return Eigen::Vector3d(2 * n); };

@@ -3,6 +3,10 @@
 // with a message naming the surface and the element.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
+#include <utility>
+
 #include "mesh/mesh_checks.hpp"
 #include "mesh/surface_generators.hpp"
 
@@ -120,4 +124,49 @@ TEST(MeshChecks, QuadsAreNumberedAfterTriangles) {
   q.surfaces[0].triangles.push_back({1, 2, 5});
   q.surfaces[0].triangles.push_back({1, 5, 4});
   expect_message(q, {"element 2 (quadrilateral 0) is inverted", "1 of 3"});
+}
+
+namespace {
+
+/// The grid as 6-node triangles: a mid-edge node at the middle of every edge, shared by the two
+/// triangles on it.
+SurfaceMesh quadratic_grid() {
+  SurfaceMesh m = grid();
+  std::map<std::pair<int, int>, int> mid;
+  for (const auto& t : m.surfaces[0].triangles) {
+    std::array<int, 3> ms{};
+    for (int a = 0; a < 3; ++a) {
+      const auto key = std::minmax(t[a], t[(a + 1) % 3]);
+      auto [it, fresh] = mid.emplace(key, static_cast<int>(m.nodes.size()));
+      if (fresh) m.nodes.push_back(0.5 * (m.nodes[t[a]] + m.nodes[t[(a + 1) % 3]]));
+      ms[a] = it->second;
+    }
+    m.surfaces[0].triangle_midsides.push_back(ms);
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST(MeshChecks, QuadraticTrianglesMustShareTheirMidEdgeNodes) {
+  SurfaceMesh m = quadratic_grid();
+  EXPECT_EQ(check_surface(m, m.surfaces[0]), "");
+  // Element 1's mid-edge node on its edge 0–2 (shared with element 0) replaced by a new node nearby:
+  // a gap would open along the edge.
+  SurfaceMesh gap = m;
+  gap.nodes.push_back(gap.nodes[gap.surfaces[0].triangle_midsides[1][0]] + Eigen::Vector3d(0.02, 0, 0));
+  gap.surfaces[0].triangle_midsides[1][0] = static_cast<int>(gap.nodes.size()) - 1;
+  expect_message(gap, {"share the edge between nodes 0 and 5 but not its mid-edge node", "not conforming"});
+  // Mid-edge nodes listed in the wrong order: on two shared edges (element 1: edges 0–5 and 5–4) not
+  // conforming; on two boundary edges (element 4: 2–3 and 3–7) far from the middle of their edges.
+  SurfaceMesh permuted = m;
+  std::swap(permuted.surfaces[0].triangle_midsides[1][0], permuted.surfaces[0].triangle_midsides[1][1]);
+  expect_message(permuted, {"not conforming"});
+  permuted = m;
+  std::swap(permuted.surfaces[0].triangle_midsides[4][0], permuted.surfaces[0].triangle_midsides[4][1]);
+  expect_message(permuted, {"element 4 (triangle 4): its mid-edge node", "0.707 edge lengths from the middle of the edge"});
+  // A corner used as a mid-edge node.
+  SurfaceMesh corner = m;
+  corner.surfaces[0].triangle_midsides[0][1] = 7;
+  expect_message(corner, {"is a corner of an element"});
 }
