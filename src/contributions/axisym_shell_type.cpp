@@ -44,6 +44,7 @@ const bool registered = [] {
                          .nodes = 2,
                          .unknowns_per_node = 4,
                          .solid = false,
+                         .pressure = true,
                          .vtk_cell = 3,           // VTK_LINE
                          .vtk_revolved_cell = 9,  // VTK_QUAD
                          .points_per_element = [](const Part& part) { return part.shell_meridian_points; },

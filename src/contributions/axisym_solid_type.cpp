@@ -41,6 +41,7 @@ const bool registered = [] {
                          .nodes = 4,
                          .unknowns_per_node = 2,
                          .solid = true,
+                         .pressure = false,
                          .vtk_cell = 9,            // VTK_QUAD
                          .vtk_revolved_cell = 12,  // VTK_HEXAHEDRON
                          .points_per_element = [](const Part&) { return 4; },

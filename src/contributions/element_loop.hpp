@@ -71,7 +71,7 @@ public:
     // scatter positions are laid out from the registration, the loop indexes them with kDofs.
     const ElementType& type = element_type(block_.kind);
     if (Kernel::kNodes != nodes_per_element(block_.kind) || Kernel::kUnknowns != type.unknowns_per_node ||
-        Kernel::kSolid != type.solid ||
+        Kernel::kSolid != type.solid || Kernel::kPressure != type.pressure ||
         layout_.scatter.size() != static_cast<std::size_t>(block_.size()) * kDofs * kDofs ||
         (Kernel::kStartStiffness && curvature_.size() != static_cast<std::size_t>(block_.size())))
       throw std::logic_error("element type " + type.name + ": its kernel, registration and layout disagree");

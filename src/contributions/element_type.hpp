@@ -80,6 +80,7 @@ struct ElementType {
   int nodes = 0;               ///< nodes per element
   int unknowns_per_node = 0;   ///< element unknowns per node (node-major element DOFs)
   bool solid = false;          ///< Gauss-point states are SolidPoint (else MembranePoint)
+  bool pressure = false;       ///< carries follower pressure and encloses a volume (pressure loads may act on it)
   std::uint8_t vtk_cell = 0;   ///< VTK cell type (vtkCellType.h) as its nodes lie
   std::uint8_t vtk_revolved_cell = 0;  ///< axisymmetric: the cell it sweeps when revolved; 0 for 3-D kinds
   /// Gauss points per element of a part (System::points order).

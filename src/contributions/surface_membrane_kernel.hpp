@@ -46,6 +46,7 @@ ElementType surface_membrane_type(ElementKind kind, std::string name, std::uint8
           .nodes = N,
           .unknowns_per_node = 3,
           .solid = false,
+          .pressure = true,
           .vtk_cell = vtk_cell,
           .vtk_revolved_cell = 0,
           .points_per_element = [](const Part&) { return SurfaceShapeTraits<N>::kPoints; },

@@ -274,7 +274,10 @@ private:
         const long np = count("the number of physical tags", 100'000);
         fits(np, f_.binary ? 4 : 2, "physical tags");
         std::vector<int> phys;
-        for (long k = 0; k < np; ++k) phys.push_back(static_cast<int>(int4("a physical tag", INT_MIN, INT_MAX)));
+        // Gmsh writes −t for an entity that belongs to physical group t with its orientation reversed
+        // (`Physical Curve("x0") = {-5};`, or the signed tags an Extrude returns): the group is t.
+        for (long k = 0; k < np; ++k)
+          phys.push_back(std::abs(static_cast<int>(int4("a physical tag", -INT_MAX, INT_MAX))));
         if (d > 0) {
           const long nb = count("the number of bounding entities", 10'000'000);
           fits(nb, f_.binary ? 4 : 2, "bounding entities");

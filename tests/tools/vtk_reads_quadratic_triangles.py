@@ -29,8 +29,8 @@ out[] = Extrude {0, 0, 2} { Curve{1}; };
 Physical Surface("wall") = {out[1]};
 Physical Curve("bottom") = {1};
 Physical Curve("top") = {out[0]};
-Physical Curve("y0") = {Abs(out[2])};
-Physical Curve("x0") = {Abs(out[3])};
+Physical Curve("x0") = {out[2]};
+Physical Curve("y0") = {out[3]};
 """)
 msh = os.path.join(scratch, "quarter.msh")
 subprocess.run([tunica, "mesh", geo, "-o", msh], check=True)
@@ -55,7 +55,7 @@ loads:
   lumen: {type: pressure, part: wall}
 steps:
   - {name: stretch, increments: 4, set: {top: 0.4 mm, lumen: 2 kPa}}
-  - {name: inflate, increments: 2, set: {lumen: 5 kPa}}
+  - {name: inflate, increments: 2, set: {lumen: 3 kPa}}
 output:
   vtk_format: ascii
   history:

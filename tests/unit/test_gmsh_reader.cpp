@@ -205,6 +205,17 @@ TEST(GmshReader, SecondOrderTrianglesAreReadWithTheirMidEdgeNodesOnTheSurface) {
   EXPECT_EQ(m.node_sets.at("bottom").size() % 2, 1u);
 }
 
+TEST(GmshReader, AGroupOfAReversedCurveKeepsItsName) {
+  // Extrude returns signed tags: the lateral curves come back reversed (−5), and Gmsh writes the
+  // entity's physical tag as −(group tag). The node set still has the group's name.
+  const SurfaceMesh m = read_script(write("signed.geo", quarter_cylinder_geo() + "Physical Curve(\"y0\") = {out[2]};\n"
+                                                                               "Physical Curve(\"x0\") = {out[3]};\n"));
+  EXPECT_EQ(m.node_sets.count("x0"), 1u);
+  EXPECT_EQ(m.node_sets.count("y0"), 1u);
+  for (const auto& [name, set] : m.node_sets) EXPECT_EQ(name.find("curve_"), std::string::npos) << name;
+  EXPECT_GT(m.node_sets.at("x0").size(), 2u);
+}
+
 TEST(GmshReader, ThirdOrderElementsAreRefused) {
   const std::string path = write("order3.geo", quarter_cylinder_geo("Mesh.ElementOrder = 3;\n"));
   const InputError e = input_error([&] { read_script(path); });
