@@ -35,14 +35,12 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
     }
     return std::numbers::pi * dz * q;
   }
-  void start(int, double, Matrix&) const {}
   void points(int, const State& s, std::vector<MembranePoint>& out) const {
     Vector f;
     std::array<MembranePoint, 2> pts;
     axisym_membrane(s.X, s.x, part.thickness, *part.material, f, nullptr, &pts);
     out.insert(out.end(), pts.begin(), pts.end());
   }
-  double energy(int, const State&) const { return 0; }
 };
 
 const bool registered = [] {

@@ -28,14 +28,12 @@ struct AxisymShellKernel : ShellKinematics {
   }
   void pressure(const State& s, double p, Vector& f, Matrix* K) const { axisym_shell_pressure(s.X, s.x, p, f, K); }
   double volume(const State& s, const VolumeMeasure&, Vector* grad) const { return axisym_shell_volume(s.X, s.x, grad); }
-  void start(int, double, Matrix&) const {}
   void points(int, const State& s, std::vector<MembranePoint>& out) const {
     Vector f;
     std::vector<ShellPoint> pts;
     axisym_shell(s.X, s.x, part.thickness, *part.material, f, nullptr, quadrature, &pts);
     for (const auto& pt : pts) out.push_back(shell_membrane_point(pt, part.thickness));
   }
-  double energy(int, const State&) const { return 0; }
 };
 
 const bool registered = [] {

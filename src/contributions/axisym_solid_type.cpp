@@ -20,9 +20,6 @@ struct AxisymSolidKernel : PlaneKinematics<4> {
   }
   // The element's diagonal.
   double length2(const Model&, const int*, const State& s) const { return (s.X.col(2) - s.X.col(0)).squaredNorm(); }
-  void pressure(const State&, double, Vector&, Matrix*) const {}
-  double volume(const State&, const VolumeMeasure&, Vector*) const { return 0; }
-  void start(int, double, Matrix&) const {}
   void points(int, const State& s, std::vector<SolidPoint>& out) const {
     Vector f;
     std::array<SolidPoint, 4> pts;

@@ -35,7 +35,6 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
     membrane3d<N>(refs[e], s.x, *part.material, f, nullptr, &pts);
     out.insert(out.end(), pts.begin(), pts.end());
   }
-  double energy(int, const State&) const { return 0; }
 };
 
 /// The element type of the N-node surface membrane of kind `kind`.

@@ -387,12 +387,11 @@ void read_loads(const DeckNode& deck, Model& m) {
     const Params p = read_params(node, load_spec(), m.units);
     const int part = m.find_part(p.text("part"));
     if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
-    if (m.parts[part].is_solid())
-      p.fail("part", "part '" + p.text("part") + "' is a solid: pressure loads act on membrane parts");
-    for (const auto& block : m.parts[part].blocks)  // any kind that carries no follower pressure
+    for (const auto& block : m.parts[part].blocks)  // a kind that carries no follower pressure (solids)
       if (const ElementType& type = element_type(block.kind); !type.pressure)
-        p.fail("part", "part '" + p.text("part") + "' has " + type.name +
-                           " elements, which carry no pressure: pressure loads act on membrane and shell parts");
+        p.fail("part", "part '" + p.text("part") + "' " +
+                           (type.solid ? std::string("is a solid") : "has " + type.name + " elements, which carry no pressure") +
+                           ": pressure loads act on membrane parts");
     PressureLoad load{name, part, p.boolean("flip") ? -1.0 : 1.0, {}, node.where()};
     const auto& vp = p.numbers("volume_point");
     load.volume.point = Eigen::Vector3d(vp[0], vp[1], vp[2]);
