@@ -282,7 +282,7 @@ int run(const Options& o) {
                 paired_n ? per_iteration / (paired_sum / paired_n) : 0.0);
   std::printf("  run's factorization floor %.2f s (each iteration's solver, one analysis each): iterations / floor %.2f\n",
               floor, (assembly + factor + solve) / floor);
-  {  // where the factorization time went, by the solver each iteration used ("+shift": retried, newton.cpp)
+  {  // where the factorization time went, by the solver each iteration used ("+shift": retried, linalg/perturbed_solve.hpp)
     std::map<std::string, std::pair<int, double>> by;
     for (const auto& r : rec.records)
       if (!r.solver.empty()) {

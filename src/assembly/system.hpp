@@ -69,7 +69,7 @@ public:
                 double* force_scale = nullptr, int* active_contacts = nullptr,
                 std::vector<char>* active_set = nullptr) const;
   /// The first Newton correction from a stress-free state (theory manual §7.2, (7.6)–(7.8);
-  /// solver/newton.hpp):
+  /// solver/tangent_hooks.hpp):
   /// adds to K (free DOFs) the normal-tension stiffness K₀ (elements/start_tension.hpp) of every
   /// 3-D membrane element of an active part under pressure p, with the tension
   ///     T₀ = |p| / max(|H_e|, 1/L)

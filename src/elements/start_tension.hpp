@@ -1,7 +1,7 @@
 #pragma once
 // Stiffness of a fictitious membrane tension acting on the normal displacement only,
 // used for the first Newton correction from a stress-free state (theory manual §7.2,
-// (7.6)–(7.7); solver/newton.hpp). With w = u·n the displacement along the reference normal n and T₀
+// (7.6)–(7.7); solver/tangent_hooks.hpp). With w = u·n the displacement along the reference normal n and T₀
 // a tension (force per length), the quadratic
 //     Q(u) = ½ T₀ ∫ ∇ₛw · ∇ₛw dA₀
 // has the Hessian, per Gauss point q of the element,

@@ -95,7 +95,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
       }
       Eigen::VectorXd u = state_.u;
       system_.apply_boundary(trial, u);
-      const NewtonResult r = newton(system_, *solver, trial, u, step.solver,
+      const NewtonResult r = solve_increment(system_, *solver, trial, u, step.solver,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
                                     vc.load >= 0 ? &constraint : nullptr, &state_.u);
       if (r.converged) {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "assembly/system.hpp"
-#include "solver/newton.hpp"
+#include "solver/increment.hpp"
 
 namespace tunica {
 

@@ -1,4 +1,4 @@
-// The stiffened first correction from a stress-free state (solver/newton.hpp, theory manual
+// The stiffened first correction from a stress-free state (solver/tangent_hooks.hpp, theory manual
 // §7.2, (7.6)–(7.8)): the same converged state as the plain tangent, in fewer iterations, and a tangent
 // CHOLMOD can factorize.
 //  - The thin neo-Hookean sphere octant inflated from rest to λ = 1.2 in one increment: the
@@ -125,7 +125,7 @@ TEST(StressFreeStart, PrescribedNormalMotionEntersThePredictorThroughTheStartSti
     SolverSettings settings = model.steps[0].solver;
     settings.max_iterations = 1;  // stop right after the predictor: u is its iterate
     auto solver = make_linear_solver("auto");
-    const NewtonResult r = newton(system, *solver, loads, u, settings, [](const IterationRecord&) {}, nullptr, &un);
+    const NewtonResult r = solve_increment(system, *solver, loads, u, settings, [](const IterationRecord&) {}, nullptr, &un);
     EXPECT_FALSE(r.converged);
     // Neighbours of the pole: the nodes within 1.5 element sizes of it (not the pole itself).
     const Eigen::Vector3d pole(0, 0, 1);

@@ -1,4 +1,4 @@
-// The tangent predictor (solver/newton.hpp): when prescribed displacements move,
+// The tangent predictor (solver/tangent_predictor.hpp): when prescribed displacements move,
 // the first iteration linearizes their increment at the last converged state.
 // A tube stretched by its end ring with 24 elements along: without the predictor
 // the ring of elements next to the moved end takes the whole increment in the

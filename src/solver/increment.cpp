@@ -1,0 +1,34 @@
+#include "solver/increment.hpp"
+
+#include <memory>
+#include <optional>
+
+#include "solver/bordered_problem.hpp"
+#include "solver/tangent_predictor.hpp"
+
+namespace tunica {
+
+NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
+                             const SolverSettings& settings,
+                             const std::function<void(const IterationRecord&)>& on_iteration,
+                             const VolumeConstraint* constraint, const Eigen::VectorXd* converged) {
+  MechanicalProblem equilibrium(system, loads, u);
+  if (constraint) {
+    BorderedProblem bordered(equilibrium, loads, constraint->load, constraint->target);
+    return newton(bordered, solver, settings, on_iteration);
+  }
+  // The increment starts at the stress-free reference state.
+  const bool stress_free = converged && converged->size() > 0 && (converged->array() == 0.0).all();
+  const StartStiffness* stiffness = nullptr;
+  if (settings.stiffen_stress_free_start && stress_free) {
+    auto hook = std::make_unique<StartStiffness>(system, loads);
+    stiffness = hook.get();
+    equilibrium.add_hook(std::move(hook));
+  }
+  if (settings.symmetrize_pressure_stiffness) equilibrium.add_hook(std::make_unique<Symmetrization>(system.pattern()));
+  std::optional<TangentPredictor> predictor;
+  if (converged && settings.tangent_predictor) predictor.emplace(equilibrium, *converged, stiffness);
+  return newton(equilibrium, solver, settings, on_iteration, predictor ? &*predictor : nullptr);
+}
+
+}  // namespace tunica

@@ -1,0 +1,50 @@
+#pragma once
+// The equilibrium of one load increment as a NonlinearProblem (theory manual (7.1)): the
+// unknowns are the free DOFs of u (prescribed DOFs already set), the residual R_f(u) and the
+// tangent K_ff = ∂R_f/∂u_f come from System::assemble at fixed loads. It tracks the contact
+// active set for the record and applies its tangent hooks (solver/tangent_hooks.hpp).
+#include <memory>
+#include <vector>
+
+#include "assembly/system.hpp"
+#include "solver/nonlinear_problem.hpp"
+#include "solver/tangent_hooks.hpp"
+
+namespace tunica {
+
+class MechanicalProblem : public NonlinearProblem {
+public:
+  /// u (all DOFs) is the state, moved in place; `loads` is read at every evaluation.
+  MechanicalProblem(const System& system, const LoadState& loads, Eigen::VectorXd& u);
+
+  /// Appends a tangent modification; hooks are applied in the order added.
+  void add_hook(std::unique_ptr<TangentHook> hook) { hooks_.push_back(std::move(hook)); }
+
+  int size() const override { return system_.num_free(); }
+  double evaluate(Eigen::VectorXd& r) override;
+  const SparseMatrix& jacobian(int iteration) override;
+  void step(const Eigen::VectorXd& dx, double factor) override;
+  void describe(IterationRecord& rec) override;
+  double max_correction() const override { return max_correction_; }
+
+  const System& system() const { return system_; }
+  const LoadState& loads() const { return loads_; }
+  Eigen::VectorXd& state() { return u_; }
+  /// The free-DOF part of a vector over all DOFs.
+  Eigen::VectorXd free_part(const Eigen::VectorXd& full) const;
+  /// The Jacobian as evaluated, without the hooks (the tangent predictor assembles into it).
+  SparseMatrix& raw_jacobian() { return K_; }
+
+private:
+  const System& system_;
+  const LoadState& loads_;
+  Eigen::VectorXd& u_;
+  SparseMatrix K_;
+  Eigen::VectorXd R_;  // all DOFs
+  std::vector<std::unique_ptr<TangentHook>> hooks_;
+  double max_correction_ = 0;
+  int active_contacts_ = 0;
+  std::vector<char> active_set_, previous_set_;  // contact active set at this / the previous kept residual
+};
+
+}  // namespace tunica
