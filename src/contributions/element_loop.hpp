@@ -20,6 +20,8 @@
 // Parallel assembly: each colour is one OpenMP loop; elements of a colour touch disjoint
 // entries of R and K, so no locks are needed and every entry receives its contributions in
 // the same order whatever the number of threads: results are identical bit for bit.
+#include <fmt/format.h>
+
 #include <exception>
 #include <stdexcept>
 #include <vector>
@@ -66,15 +68,24 @@ public:
 
   explicit KernelBlock(BlockContext ctx)
       : model_(ctx.model), block_(ctx.block), kernel_(ctx), layout_(std::move(ctx.layout)),
-        curvature_(std::move(ctx.curvature)) {
+        curvature_(std::move(ctx.curvature)),
+        points_per_element_(element_type(ctx.block.kind).points_per_element(ctx.part)) {
     // The registration, the model's kind and the kernel must agree on the element's size: the
     // scatter positions are laid out from the registration, the loop indexes them with kDofs.
     const ElementType& type = element_type(block_.kind);
-    if (Kernel::kNodes != nodes_per_element(block_.kind) || Kernel::kUnknowns != type.unknowns_per_node ||
-        Kernel::kSolid != type.solid || Kernel::kPressure != type.pressure ||
-        layout_.scatter.size() != static_cast<std::size_t>(block_.size()) * kDofs * kDofs ||
-        (Kernel::kStartStiffness && curvature_.size() != static_cast<std::size_t>(block_.size())))
-      throw std::logic_error("element type " + type.name + ": its kernel, registration and layout disagree");
+    std::string wrong;
+    const auto agree = [&](const char* what, long kernel, long other, const char* where) {
+      if (kernel != other) wrong += fmt::format("; {}: the kernel has {}, {} {}", what, kernel, where, other);
+    };
+    agree("nodes", Kernel::kNodes, nodes_per_element(block_.kind), "the model's kind");
+    agree("unknowns per node", Kernel::kUnknowns, type.unknowns_per_node, "the registration");
+    agree("solid", Kernel::kSolid, type.solid, "the registration");
+    agree("pressure", Kernel::kPressure, type.pressure, "the registration");
+    agree("scatter positions per element", kDofs * kDofs,
+          block_.size() ? static_cast<long>(layout_.scatter.size()) / block_.size() : kDofs * kDofs, "the layout");
+    if (Kernel::kStartStiffness)
+      agree("curvatures (one per element)", block_.size(), static_cast<long>(curvature_.size()), "the context");
+    if (!wrong.empty()) throw std::logic_error("element type " + type.name + " disagrees with itself" + wrong);
   }
 
   void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
@@ -189,12 +200,19 @@ public:
   }
 
 private:
+  /// Appends the points of every element: the registration's points_per_element each (the
+  /// writers index them by it), checked.
   template <class Point>
   void points(const Eigen::VectorXd& u, std::vector<Point>& out) const {
     for (int e = 0; e < block_.size(); ++e) {
       State s;
       Kernel::gather(model_, block_.element(e), u, s);
+      const std::size_t before = out.size();
       kernel_.points(e, s, out);
+      if (out.size() - before != static_cast<std::size_t>(points_per_element_))
+        throw std::logic_error(fmt::format("element type {}: its kernel gave {} points for an element, its "
+                                           "registration's points_per_element says {}",
+                                           element_type(block_.kind).name, out.size() - before, points_per_element_));
     }
   }
 
@@ -214,6 +232,7 @@ private:
   Kernel kernel_;
   BlockLayout layout_;
   std::vector<double> curvature_;
+  int points_per_element_ = 0;
 };
 
 /// The `make` of an element type implemented by Kernel.

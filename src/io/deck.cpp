@@ -517,7 +517,7 @@ void read_output(const DeckNode& deck, Model& m) {
     if (m.output.vtk_fields.empty()) list.fail("the list is empty: leave vtk_fields out for every array, or set vtk: false");
   }
   if (!out.has("history")) return;
-  std::set<std::string> columns;
+  std::set<std::string> columns = {"step", "increment", "time"};  // written first in every history.csv
   for (const auto& node : out["history"].items()) {
     const Params h = read_params(node, history_spec(), m.units);
     HistoryRequest r;
@@ -592,7 +592,11 @@ void read_output(const DeckNode& deck, Model& m) {
       h.fail("unit", "quantity '" + r.quantity + "' is dimensionless");
     }
     r.column = (h.has("name") ? h.text("name") : r.quantity) + suffix;
-    if (!columns.insert(r.column).second) node.fail("duplicate history column '" + r.column + "'");
+    if (!columns.insert(r.column).second)
+      node.fail("duplicate history column '" + r.column + "'" +
+                (r.column == "time" || r.column == "step" || r.column == "increment"
+                     ? std::string(" (step, increment and time are always the first three columns)")
+                     : std::string(" (give one of them a `name`)")));
     m.output.history.push_back(r);
   }
 }

@@ -1,20 +1,8 @@
 #pragma once
-// Sparse direct solvers behind one interface, registered by name (the deck's
-// `solver.linear_solver` takes its choices from the registry). The symbolic analysis is
-// done once per pattern and reused by every numeric factorization. Registered
-// (linalg/linear_solvers.cpp):
-//
-//   cholmod    SuiteSparse CHOLMOD, supernodal LLᵀ of the lower triangle: for
-//              symmetric positive definite tangents (a hyperelastic membrane
-//              under prescribed displacements, or under pressure on a closed
-//              or held surface at a stable state).
-//   umfpack    SuiteSparse UMFPACK, unsymmetric multifrontal LU: any regular
-//              tangent (an open loaded surface, a bordered volume-control
-//              system, a state beyond a limit point).
-//   sparse_lu  Eigen's own supernodal LU (COLAMD): the fallback without SuiteSparse.
-//   auto       per factorization: CHOLMOD if K is symmetric to round-off
-//              (max |K_ij − K_ji| ≤ 1e-12 max |K_ij|) and positive definite,
-//              otherwise UMFPACK.
+// Linear solvers behind one interface, registered by name: the deck's `solver.linear_solver`
+// takes its choices from the registry, and the deck reference lists them with their one-line
+// descriptions (`tunica reference`; the shipped ones are in linalg/linear_solvers.cpp). The
+// symbolic analysis is done once per pattern and reused by every numeric factorization.
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>
@@ -35,6 +23,10 @@ public:
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) = 0;
   /// The solver that did the last factorization ("cholmod", "umfpack", "sparse_lu").
   virtual const char* used() const = 0;
+  /// Why a factorize() that returned false may not mean a singular K: a solver that takes only
+  /// some matrices (symmetric, positive definite) names what it needs and which solver takes
+  /// the rest. Empty: false means singular. Newton's failure message quotes it.
+  virtual std::string refusal() const { return ""; }
 };
 
 /// A linear solver a deck can name.

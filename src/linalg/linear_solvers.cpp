@@ -16,7 +16,7 @@ namespace {
 template <class Solver>
 class EigenDirect final : public LinearSolver {
 public:
-  explicit EigenDirect(const char* name) : name_(name) {
+  EigenDirect(const char* name, const char* refusal) : name_(name), refusal_(refusal) {
     if constexpr (requires(Solver s) { s.cholmod(); }) solver_.cholmod().print = 0;  // failures are reported by us
   }
   bool factorize(const SparseMatrix& K) override {
@@ -29,12 +29,20 @@ public:
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return solver_.solve(b); }
   const char* used() const override { return name_; }
+  std::string refusal() const override { return refusal_; }
 
 private:
   Solver solver_;
   bool analyzed_ = false;
   const char* name_;
+  const char* refusal_;
 };
+
+/// CHOLMOD cannot tell a singular tangent from one that is not symmetric positive definite.
+constexpr const char* kCholmodRefusal =
+    "cholmod factorizes symmetric positive definite tangents only: this one is singular (is the model held against "
+    "rigid-body motion?) or not symmetric positive definite (a follower pressure on an open surface, a state past a "
+    "limit point); `linear_solver: auto` or `umfpack` takes any regular tangent";
 
 using Cholmod = EigenDirect<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>;
 using Umfpack = EigenDirect<Eigen::UmfPackLU<SparseMatrix>>;
@@ -54,11 +62,12 @@ public:
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return active_->solve(b); }
   const char* used() const override { return active_ ? active_->used() : "auto"; }
+  std::string refusal() const override { return active_ ? active_->refusal() : ""; }
 
 private:
   std::optional<TransposeMap> map_;
-  Cholmod cholmod_{"cholmod"};
-  Umfpack umfpack_{"umfpack"};
+  Cholmod cholmod_{"cholmod", ""};  // a refused tangent goes on to UMFPACK
+  Umfpack umfpack_{"umfpack", ""};
   LinearSolver* active_ = nullptr;
 };
 
@@ -66,11 +75,11 @@ const bool registered = register_linear_solver(
                             {"auto", "CHOLMOD when the tangent is symmetric (to 1e-12) and positive definite, else UMFPACK",
                              [] { return std::make_unique<AutoSolver>(); }}) &&
                         register_linear_solver({"cholmod", "SuiteSparse CHOLMOD, supernodal LLᵀ: symmetric positive definite tangents",
-                                                [] { return std::make_unique<Cholmod>("cholmod"); }}) &&
+                                                [] { return std::make_unique<Cholmod>("cholmod", kCholmodRefusal); }}) &&
                         register_linear_solver({"umfpack", "SuiteSparse UMFPACK, unsymmetric multifrontal LU: any regular tangent",
-                                                [] { return std::make_unique<Umfpack>("umfpack"); }}) &&
+                                                [] { return std::make_unique<Umfpack>("umfpack", ""); }}) &&
                         register_linear_solver({"sparse_lu", "Eigen's supernodal LU (COLAMD ordering)",
-                                                [] { return std::make_unique<SparseLU>("sparse_lu"); }});
+                                                [] { return std::make_unique<SparseLU>("sparse_lu", ""); }});
 
 }  // namespace
 

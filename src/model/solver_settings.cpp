@@ -53,7 +53,7 @@ const ComponentSpec& solver_settings_spec() {
                       deck_bool(d.line_search)),
          with_default(at_most(at_least(integer("line_search_halvings", "most halvings of one Newton correction by the line search"), 1), 50),
                       std::to_string(d.line_search_halvings)),
-         with_default(one_of(text("linear_solver", "sparse direct solver: " + linear_solver_docs()), linear_solver_names()),
+         with_default(one_of(text("linear_solver", "the linear solver of each Newton correction: " + linear_solver_docs()), linear_solver_names()),
                       d.linear_solver),
          with_default(one_of(text("predictor",
                                   "first iteration of an increment whose prescribed displacements move: tangent = "

@@ -9,6 +9,16 @@ namespace tunica {
 namespace {
 
 using Q = HistoryQuantity;
+
+/// A quantity's name, target, dimension and meaning; the rest set by the caller.
+Q quantity(std::string name, QuantityTarget target, Dimension dim, std::string doc) {
+  Q q;
+  q.name = std::move(name);
+  q.target = target;
+  q.dim = dim;
+  q.doc = std::move(doc);
+  return q;
+}
 using T = QuantityTarget;
 
 /// The DOF of a node along the named component ("r", "x", "z", ...) of the model's DOF names.
@@ -21,7 +31,7 @@ int dof_of(const Model& m, int node, const std::string& dof) {
 
 /// position_<dof>, displacement_<dof>, reaction_<dof> (theory manual §4: reactions are R on prescribed DOFs).
 Q node_dof(const std::string& what, const std::string& dof, Dimension dim, std::string doc) {
-  Q q{what + "_" + dof, T::node_set, dim, std::move(doc)};
+  Q q = quantity(what + "_" + dof, T::node_set, dim, std::move(doc));
   if (dof == "r") q.geometry = Geometry::axisymmetric;
   if (dof == "x" || dof == "y") q.geometry = Geometry::three_d;
   if (what == "reaction") q.reduce = Reduce::sum;
@@ -37,7 +47,7 @@ Q node_dof(const std::string& what, const std::string& dof, Dimension dim, std::
 
 /// slope_<r|z> (x′ = X′ + u′) and reaction_slope_<r|z> of shell nodes (theory manual §11).
 Q node_slope(bool reaction, int c, Dimension dim, std::string doc) {
-  Q q{std::string(reaction ? "reaction_" : "") + "slope_" + (c == 0 ? "r" : "z"), T::node_set, dim, std::move(doc)};
+  Q q = quantity(std::string(reaction ? "reaction_" : "") + "slope_" + (c == 0 ? "r" : "z"), T::node_set, dim, std::move(doc));
   if (c == 0) q.geometry = Geometry::axisymmetric;
   q.shells_only = true;
   if (reaction) q.reduce = Reduce::sum;
@@ -52,7 +62,7 @@ Q node_slope(bool reaction, int c, Dimension dim, std::string doc) {
 /// A quantity of the Gauss points of membrane and shell parts.
 Q membrane(std::string name, Dimension dim, std::string doc, std::function<double(const MembranePoint&)> f,
            bool shells_only = false) {
-  Q q{std::move(name), T::part, dim, std::move(doc)};
+  Q q = quantity(std::move(name), T::part, dim, std::move(doc));
   q.membrane = std::move(f);
   q.shells_only = shells_only;
   return q;
@@ -62,7 +72,7 @@ Q membrane(std::string name, Dimension dim, std::string doc, std::function<doubl
 /// meridian plane θ = 0 (x = r, y = hoop, z = z), solids from their points.
 Q cylindrical(std::string name, Dimension dim, std::string doc, std::function<double(const Eigen::Matrix3d&)> on_membrane,
               std::function<double(const SolidPoint&)> on_solid) {
-  Q q{std::move(name), T::part, dim, std::move(doc)};
+  Q q = quantity(std::move(name), T::part, dim, std::move(doc));
   q.geometry = Geometry::axisymmetric;
   q.membrane = [f = std::move(on_membrane)](const MembranePoint& p) { return f(p.cauchy); };
   q.solid = std::move(on_solid);
@@ -70,7 +80,7 @@ Q cylindrical(std::string name, Dimension dim, std::string doc, std::function<do
 }
 
 Q contact(std::string name, Dimension dim, Reduce reduce, std::string doc, std::function<double(const ContactNodeState&)> f) {
-  Q q{std::move(name), T::contact, dim, std::move(doc)};
+  Q q = quantity(std::move(name), T::contact, dim, std::move(doc));
   q.reduce = reduce;
   q.contact = std::move(f);
   return q;
@@ -80,12 +90,12 @@ std::vector<Q> make_table() {
   const Dimension none = Dimension::dimensionless, stress = Dimension::pressure;
   std::vector<Q> t;
   {
-    Q q{"time", T::none, none, "analysis time: step number − 1 + fraction of the step done"};
+    Q q = quantity("time", T::none, none, "analysis time: step number − 1 + fraction of the step done");
     q.global = [](const QuantityState& s) { return s.time; };
     t.push_back(q);
   }
   {
-    Q q{"pressure", T::load, Dimension::pressure, "current magnitude of a pressure load"};
+    Q q = quantity("pressure", T::load, Dimension::pressure, "current magnitude of a pressure load");
     q.at = [](const QuantityState& s, int l) { return s.loads.pressure[l]; };
     t.push_back(q);
     Q v{"volume", T::load, Dimension::volume, "enclosed volume of the load's surface (see `loads`)"};

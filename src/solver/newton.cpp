@@ -99,7 +99,10 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
     if (!note.empty()) ++result.perturbed;
     if (!solved) {
       on_iteration(rec);
-      result.failure = "the tangent matrix is singular (is the model held against rigid-body motion?)";
+      const std::string refusal = solver.refusal();
+      result.failure = refusal.empty()
+                           ? "the tangent matrix is singular (is the model held against rigid-body motion?)"
+                           : "the linear solver could not factorize the tangent: " + refusal;
       return result;
     }
     on_iteration(rec);

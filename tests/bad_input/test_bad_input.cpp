@@ -184,3 +184,10 @@ TEST(BadInput, EmptyOutputDirectory) {
   EXPECT_EQ(o.exit_code, 2) << o.output;
   EXPECT_NE(o.output.find("the output directory (-o) is empty"), std::string::npos) << o.output;
 }
+
+TEST(BadInput, HistoryColumnThatIsAlwaysWritten) {
+  // step, increment and time open every history.csv: a request for `time` would repeat its header.
+  expect_error("history-time", "    - {quantity: pressure, load: lumen, unit: mmHg}\n",
+               "    - {quantity: time}\n    - {quantity: pressure, load: lumen, unit: mmHg}\n", "output.history[0]",
+               "always the first three columns", "    - {quantity: time}");
+}

@@ -171,3 +171,20 @@ TEST(NewtonOnAProblem, AFirstCorrectionStrategyIsIterationZero) {
   EXPECT_EQ(records[1].iteration, 1);
   EXPECT_NEAR(records[1].relative_residual, std::abs(1.9 * 1.9 * 1.9 - 8.0) / 8.0, 1e-12);
 }
+
+TEST(NewtonOnAProblem, ASolverThatRefusesTheTangentSaysWhyAndWhichSolverTakesIt) {
+  // −x = 1: a regular but negative definite tangent, which CHOLMOD refuses and UMFPACK factorizes.
+  const auto f = [](double x) { return -x; };
+  const auto df = [](double) { return -1.0; };
+  Scalars p(f, df, Eigen::VectorXd::Zero(2), Eigen::Vector2d(1.0, 1.0));
+  auto cholmod = make_linear_solver("cholmod");
+  const NewtonResult refused = newton(p, *cholmod, SolverSettings{}, [](const IterationRecord&) {});
+  EXPECT_FALSE(refused.converged);
+  EXPECT_NE(refused.failure.find("could not factorize"), std::string::npos) << refused.failure;
+  EXPECT_NE(refused.failure.find("`linear_solver: auto` or `umfpack`"), std::string::npos) << refused.failure;
+
+  Scalars q(f, df, Eigen::VectorXd::Zero(2), Eigen::Vector2d(1.0, 1.0));
+  auto umfpack = make_linear_solver("umfpack");
+  EXPECT_TRUE(newton(q, *umfpack, SolverSettings{}, [](const IterationRecord&) {}).converged);
+  EXPECT_EQ(umfpack->refusal(), "");
+}

@@ -30,7 +30,8 @@ const ParamSpec& declared(const std::string& key) {
 
 TEST(LinearSolverRegistry, TheDeckOffersExactlyTheRegisteredSolvers) {
   const std::vector<std::string> names = linear_solver_names();
-  EXPECT_EQ(names, (std::vector<std::string>{"auto", "cholmod", "sparse_lu", "umfpack"}));
+  for (const char* shipped : {"auto", "cholmod", "sparse_lu", "umfpack"})  // a solver added later joins them
+    EXPECT_NE(std::find(names.begin(), names.end(), shipped), names.end()) << shipped;
   EXPECT_EQ(declared("linear_solver").choices, names);
   for (const auto& n : names) {
     const auto solver = make_linear_solver(n);
