@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 #include "fit/fit_command.hpp"
@@ -43,6 +44,45 @@ void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, 
     fail("the run to resume has other boundary conditions or loads than this deck");
   if (c.step >= static_cast<int>(m.steps.size()) || (c.step == static_cast<int>(m.steps.size()) - 1 && c.fraction >= 1.0))
     fail("the run to resume has already completed every step of this deck");
+  if (!r.has_fingerprint) {
+    std::fprintf(stderr, "tunica: warning: %s predates restart fingerprints: that the deck is unchanged is not checked\n",
+                 for_terminal(file).c_str());
+    return;
+  }
+  // What the converged increments depend on (io/deck_fingerprint.hpp): every key of the model
+  // and of the steps with a converged increment (c.step, 0-based, once its fraction is past 0)
+  // must be as the run had it.
+  const auto reached = [&](const tunica::FingerprintEntry& e) {
+    return e.step < c.step || (e.step == c.step && c.fraction > 0);
+  };
+  const auto shown = [](const std::string& v) { return v.empty() ? std::string("(not given)") : "'" + v + "'"; };
+  std::map<std::string, const tunica::FingerprintEntry*> now, then;
+  for (const auto& e : m.fingerprint)
+    if (reached(e)) now[e.key] = &e;
+  for (const auto& e : r.fingerprint)
+    if (reached(e)) then[e.key] = &e;
+  std::vector<std::string> changes;
+  for (const auto& e : r.fingerprint) {
+    if (!reached(e)) continue;
+    const auto it = now.find(e.key);
+    if (it == now.end())
+      changes.push_back(fmt::format("{} (was {}, now not given)", e.key, shown(e.value)));
+    else if (it->second->value != e.value)
+      changes.push_back(fmt::format("{} (was {}, now {})", e.key, shown(e.value), shown(it->second->value)));
+  }
+  for (const auto& e : m.fingerprint)
+    if (reached(e) && !then.count(e.key)) changes.push_back(fmt::format("{} (not given before, now {})", e.key, shown(e.value)));
+  if (changes.empty()) return;
+  std::string list;
+  for (std::size_t k = 0; k < changes.size() && k < 8; ++k) list += "\n  " + changes[k];
+  if (changes.size() > 8) list += fmt::format("\n  and {} more", changes.size() - 8);
+  throw tunica::InputError(
+      {m.deck_file, 0, 0, ""},
+      fmt::format("the deck differs from the run to resume in what its converged increments depend on ({} in {}):{}\n"
+                  "Undo the change, or start a new run in a new folder. Free to change on a restart: title, solver, "
+                  "the steps not yet reached, each step's solver and name, and output other than history and "
+                  "vtk_fields. A value respelt (30 kPa as 0.03 MPa) counts as a change.",
+                  changes.size() == 1 ? "this key" : fmt::format("{} keys", changes.size()), file, list));
 }
 
 int run(const std::string& deck, std::string out, const std::string& restart, bool quiet,

@@ -1,4 +1,5 @@
 #include "io/deck.hpp"
+#include "io/deck_fingerprint.hpp"
 
 #include "contributions/element_type.hpp"
 
@@ -669,6 +670,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
   read_steps(deck, m, solver);
   read_output(deck, m);
+  m.fingerprint = deck_fingerprint(deck, m);
   return m;
 }
 

@@ -234,6 +234,17 @@ struct OutputSettings {
 /// (output/vtk_writer.cpp); `output.vtk_fields` selects among them.
 const std::vector<std::string>& vtk_field_names(Geometry g);
 
+/// One item of what a run's converged states depend on, for the restart check: a deck key as
+/// the deck reference spells it ("materials.wall.mu", "steps[1].set.lumen") with its value as
+/// written, or a part's or node set's mesh data with a digest of it. `step` ≥ 0: a key of that
+/// step (0-based), which the converged states depend on once the run has reached the step.
+struct FingerprintEntry {
+  std::string key;
+  std::string value;
+  int step = -1;
+  bool operator==(const FingerprintEntry&) const = default;
+};
+
 struct Model {
   std::string deck_file;
   std::string title;
@@ -259,6 +270,8 @@ struct Model {
   std::vector<ContactPair> contacts;
   std::vector<Step> steps;
   OutputSettings output;
+  /// What the converged states depend on (io/deck_fingerprint.hpp), in deck order.
+  std::vector<FingerprintEntry> fingerprint;
 
   int num_nodes() const { return static_cast<int>(X.size()); }
   int dofs_per_node() const { return geometry == Geometry::axisymmetric ? 2 : 3; }

@@ -13,7 +13,16 @@ namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 3";
+constexpr const char* kMagic = "tunica-restart 4";
+constexpr const char* kMagicWithoutFingerprint = "tunica-restart 3";
+constexpr long kMaxFingerprint = 1'000'000;
+constexpr std::size_t kMaxFingerprintText = 4096;  // bytes of one key or value
+
+std::string hex(const std::string& text) {
+  std::string h;
+  for (unsigned char c : text) h += fmt::format("{:02x}", c);
+  return h.empty() ? "-" : h;
+}
 constexpr long kMaxFiles = 16;
 constexpr long kMaxValues = 100'000'000;  // refuse absurd counts before allocating
 
@@ -80,6 +89,21 @@ public:
     if (w.size() != 8 || *end || errno == ERANGE || v > 0xffffffffUL) fail("not a CRC-32 (8 hex digits): '" + w + "'");
     return static_cast<std::uint32_t>(v);
   }
+  /// The text `hex()` wrote.
+  std::string unhex(const std::string& w) {
+    if (w == "-") return "";
+    if (w.size() % 2 || w.size() > 2 * kMaxFingerprintText) fail("not a hex-encoded text: '" + w.substr(0, 40) + "'");
+    std::string t;
+    for (std::size_t i = 0; i < w.size(); i += 2) {
+      const auto digit = [&](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        fail("not a hex-encoded text: '" + w.substr(0, 40) + "'");
+      };
+      t += static_cast<char>(digit(w[i]) * 16 + digit(w[i + 1]));
+    }
+    return t;
+  }
   /// Bytes read so far (the start of the next line).
   std::size_t position() { return static_cast<std::size_t>(in_.tellg()); }
   [[noreturn]] void fail(const std::string& what) const {
@@ -103,6 +127,8 @@ std::string restart_text(const RestartRecord& r) {
   s += fmt::format("history_rows {}\nnewton_rows {}\nframes {}\nfiles {}\n", r.history_rows, r.newton_rows, r.frames,
                    r.files.size());
   for (const auto& f : r.files) s += fmt::format("file {} {} {:08x}\n", f.name, f.size_bytes, f.crc32);
+  s += fmt::format("fingerprint {}\n", r.fingerprint.size());
+  for (const auto& e : r.fingerprint) s += fmt::format("key {} {} {}\n", e.step + 1, hex(e.key), hex(e.value));
   put(s, "step_start_boundary", c.step_start.boundary);
   put(s, "step_start_pressure", c.step_start.pressure);
   put(s, "step_start_volume", c.step_start.volume);
@@ -119,9 +145,11 @@ RestartRecord read_restart(const std::string& path) {
   RestartRecord r;
   {
     const std::string first = text.substr(0, text.find('\n'));
-    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic)
-      in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic + "')");
-    if (first != kMagic) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
+    r.has_fingerprint = first != kMagicWithoutFingerprint;
+    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && r.has_fingerprint)
+      in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic +
+              "' and '" + kMagicWithoutFingerprint + "')");
+    if (first.rfind("tunica-restart ", 0) != 0) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
   }
   in.line("tunica-restart");
   const auto deck = in.line("deck");
@@ -141,6 +169,14 @@ RestartRecord read_restart(const std::string& path) {
     if (w.size() != 3) in.fail("'file' takes a name, a byte length and a CRC-32");
     if (w[0].empty() || w[0].find("..") != std::string::npos || w[0][0] == '/') in.fail("not a file of the run: '" + w[0] + "'");
     r.files.push_back({w[0], static_cast<std::uint64_t>(in.integer(w[1], 1L << 50)), in.hex32(w[2])});
+  }
+  if (r.has_fingerprint) {
+    const long entries = in.scalar_int("fingerprint", kMaxFingerprint);
+    for (long k = 0; k < entries; ++k) {
+      const auto w = in.line("key");
+      if (w.size() != 3) in.fail("'key' takes a step, a key and a value");
+      r.fingerprint.push_back({in.unhex(w[1]), in.unhex(w[2]), static_cast<int>(in.integer(w[0], 1'000'000)) - 1});
+    }
   }
   c.step_start.boundary = in.vector("step_start_boundary");
   c.step_start.pressure = in.vector("step_start_pressure");

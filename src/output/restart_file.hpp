@@ -22,6 +22,10 @@ struct RestartRecord {
   long frames = 0;                 ///< ParaView frames written (rows of each series in frames.csv)
   std::string deck;                ///< path of the deck the run was started with
   std::vector<FileRecord> files;   ///< history.csv, newton.csv and, with frames, frames.csv and the .pvd files
+  /// What the converged states depend on (io/deck_fingerprint.hpp), as the run's deck had it.
+  std::vector<FingerprintEntry> fingerprint;
+  /// False for a restart file of format 3, written before fingerprints: nothing to compare.
+  bool has_fingerprint = true;
 };
 
 /// Text of a restart file.

@@ -171,7 +171,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   last_info_ = info;
   last_framed_ = wants_frame(info) || (model_.output.vtk && stop_requested());
   if (last_framed_) write_frame(analysis, info);
-  last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}};
+  last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}, model_.fingerprint};
   for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
     if (f->is_open()) last_->files.push_back(f->record());
   committed_ = false;

@@ -98,7 +98,7 @@ std::vector<Q> make_table() {
     Q q = quantity("pressure", T::load, Dimension::pressure, "current magnitude of a pressure load");
     q.at = [](const QuantityState& s, int l) { return s.loads.pressure[l]; };
     t.push_back(q);
-    Q v{"volume", T::load, Dimension::volume, "enclosed volume of the load's surface (see `loads`)"};
+    Q v = quantity("volume", T::load, Dimension::volume, "enclosed volume of the load's surface (see `loads`)");
     v.at = [](const QuantityState& s, int l) { return s.loads.volume[l]; };
     t.push_back(v);
   }

@@ -139,7 +139,7 @@ TEST(EnterStep, ARunStoppedBeforeThePartEntersResumesBitForBit) {
     StepOneObserver s;
     s.stop_after_step_one = true;
     EXPECT_THROW(again.run(s), Interrupted);
-    std::ofstream(path) << restart_text(RestartRecord{again.checkpoint(), 0, 0, 0, "artery-plaque.yaml", {}});
+    std::ofstream(path) << restart_text(RestartRecord{again.checkpoint(), 0, 0, 0, "artery-plaque.yaml", {}, {}});
   }
   const RestartRecord r = read_restart(path.string());
   EXPECT_EQ(r.checkpoint.step, 0);

@@ -266,7 +266,9 @@ TEST(OutputFolder, EveryVtkFormatDecodesToTheSameValues) {
     EXPECT_NE(binary.find("<AppendedData encoding=\"raw\">"), std::string::npos);
     EXPECT_EQ(binary.find("compressor="), std::string::npos);
     EXPECT_NE(compressed.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
-    if (std::string(series) == "surface") EXPECT_LT(compressed.size(), binary.size());  // the 1-cell meridian is too small to gain
+    if (std::string(series) == "surface") {  // the 1-cell meridian is too small to gain
+      EXPECT_LT(compressed.size(), binary.size());
+    }
     EXPECT_EQ(decode_array<std::int64_t>(binary, "connectivity"), decode_array<std::int64_t>(ascii, "connectivity"));
     EXPECT_EQ(decode_array<std::int64_t>(compressed, "offsets"), decode_array<std::int64_t>(ascii, "offsets"));
     EXPECT_EQ(decode_array<std::uint8_t>(compressed, "types"), decode_array<std::uint8_t>(ascii, "types"));
