@@ -1,5 +1,7 @@
 #include "solver/analysis.hpp"
 
+#include "solver/failure_hints.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -74,6 +76,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
   };
 
   auto solver = solver_factory_(step.solver.linear_solver);
+  std::vector<LoadState> converged = {state_.loads};  // for the hints of a failure (failure_hints.hpp)
   const double nominal = 1.0 / step.increments;
   double t = state_.fraction;
   double dt = state_.dt > 0 ? state_.dt : nominal;
@@ -102,6 +105,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
         state_.u = u;
         state_.loads = trial;
         update_volumes();
+        converged.push_back(state_.loads);
         info.iterations = r.iterations;
         break;
       }
@@ -112,8 +116,9 @@ void Analysis::run_step(AnalysisObserver& observer) {
       if (attempt >= step.solver.max_cutbacks || 0.5 * dt < min_dt * (1 - 1e-12)) {
         throw SolveError(fmt::format(
             "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
-            "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.",
-            info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks));
+            "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
+            info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
+            failure_hints(model_, step, r, converged)));
       }
       observer.on_cutback(info, why);
       dt *= 0.5;
