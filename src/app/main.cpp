@@ -14,6 +14,7 @@
 #include "io/deck.hpp"
 #include "io/reference.hpp"
 #include "core/printable.hpp"
+#include "assembly/pressure_load_checks.hpp"
 #include "mesh/geo_mesher.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "output/atomic_file.hpp"
@@ -85,6 +86,13 @@ void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, 
                   changes.size() == 1 ? "this key" : fmt::format("{} keys", changes.size()), file, list));
 }
 
+/// What the model reads as valid but is likely not meant (assembly/pressure_load_checks.hpp).
+void print_warnings(const tunica::System& system) {
+  for (const std::string& w : tunica::pressure_load_warnings(system))
+    std::fprintf(stderr, "tunica: warning: %s: %s\n", for_terminal(system.model().deck_file).c_str(),
+                 for_terminal(w).c_str());
+}
+
 int run(const std::string& deck, std::string out, const std::string& restart, bool quiet,
         const tunica::ReadOptions& options) {
   const tunica::Model model = tunica::read_deck(deck, options);
@@ -107,6 +115,7 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   }
   tunica::RunWriter writer(model, out, quiet ? nullptr : stdout, resume.get());
   tunica::Analysis analysis(model);
+  print_warnings(analysis.system());
   tunica::install_stop_handlers();
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -135,6 +144,7 @@ int check(const std::string& deck, const tunica::ReadOptions& options) {
               "%zu load(s), %zu step(s), %zu history column(s)\n",
               deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,
               model.boundaries.size(), model.loads.size(), model.steps.size(), model.output.history.size());
+  print_warnings(tunica::System(model));
   return 0;
 }
 

@@ -1,0 +1,163 @@
+#include "assembly/pressure_load_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace tunica {
+
+namespace {
+
+/// Union-find over node numbers, for the connected chains of open edges.
+struct Chains {
+  std::map<int, int> parent;
+  int find(int a) {
+    auto it = parent.find(a);
+    if (it == parent.end()) return parent[a] = a;
+    if (it->second == a) return a;
+    return it->second = find(it->second);
+  }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges) {
+  // Edges of the corner polygons, counted over the part; an open edge is used once, with the
+  // direction its element gives it.
+  struct Use {
+    int count = 0;
+    std::pair<int, int> directed;  // a → b as its element runs it
+  };
+  std::map<std::pair<int, int>, Use> edges;  // by sorted node pair
+  double longest = 0;
+  for (const ElementBlock& b : m.parts[part].blocks) {
+    if (!is_surface_kind(b.kind)) return 0;
+    const int c = corner_nodes(b.kind);
+    for (int e = 0; e < b.size(); ++e) {
+      const int* en = b.element(e);
+      for (int k = 0; k < c; ++k) {
+        const int a = en[k], z = en[(k + 1) % c];
+        auto& rec = edges[{std::min(a, z), std::max(a, z)}];
+        if (rec.count++ == 0) rec.directed = {a, z};
+        longest = std::max(longest, (m.X[a] - m.X[z]).norm());
+      }
+    }
+  }
+  std::vector<std::pair<int, int>> open;
+  for (const auto& [key, rec] : edges)
+    if (rec.count == 1) open.push_back(rec.directed);
+  // The plane through p₀ and an edge; an edge whose plane a neighbouring open edge shares is
+  // closed by that plane (a symmetry plane, an end through p₀).
+  const auto plane = [&](const std::pair<int, int>& e) -> Eigen::Vector3d {
+    const Eigen::Vector3d n = (m.X[e.first] - p0).cross(m.X[e.second] - p0);
+    return n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+  };
+  std::map<int, std::vector<int>> at_node;
+  for (int i = 0; i < static_cast<int>(open.size()); ++i) {
+    at_node[open[i].first].push_back(i);
+    at_node[open[i].second].push_back(i);
+  }
+  const double scale = std::max(longest, 1e-300);
+  std::vector<char> needs_cap(open.size(), 1);
+  for (int i = 0; i < static_cast<int>(open.size()); ++i) {
+    const Eigen::Vector3d ni = plane(open[i]);
+    if (ni.isZero()) {  // the edge is on a line through p₀: any plane through it passes p₀
+      needs_cap[i] = 0;
+      continue;
+    }
+    for (int node : {open[i].first, open[i].second})
+      for (int j : at_node[node])
+        if (j != i) {
+          const Eigen::Vector3d nj = plane(open[j]);
+          // Coplanar with p₀: the neighbour lies in this edge's plane (to 1e-6 of the longest edge).
+          const double off = std::max(std::abs(ni.dot(m.X[open[j].first] - p0)), std::abs(ni.dot(m.X[open[j].second] - p0)));
+          if (!nj.isZero() && off <= 1e-6 * scale) needs_cap[i] = 0;
+        }
+  }
+  Chains chains;
+  int counted = 0;
+  for (int i = 0; i < static_cast<int>(open.size()); ++i)
+    if (needs_cap[i]) {
+      chains.join(open[i].first, open[i].second);
+      ++counted;
+    }
+  if (open_edges) *open_edges = counted;
+  // Per chain: Newell's normal and centroid give its plane; the cap is fanned from the point of
+  // that plane nearest p₀, and its volume about p₀ is Σ det[c − p₀, x_b − p₀, x_a − p₀] / 6 over its
+  // edges (a cap runs against its surface's edges to close it outward).
+  std::map<int, std::vector<int>> by_chain;
+  for (int i = 0; i < static_cast<int>(open.size()); ++i)
+    if (needs_cap[i]) by_chain[chains.find(open[i].first)].push_back(i);
+  double V = 0;
+  for (const auto& [root, members] : by_chain) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+    for (int i : members) centroid += 0.5 * (m.X[open[i].first] + m.X[open[i].second]);
+    centroid /= static_cast<double>(members.size());
+    for (int i : members) normal += (m.X[open[i].first] - centroid).cross(m.X[open[i].second] - centroid);
+    Eigen::Vector3d c = centroid;
+    if (normal.norm() > 0) {
+      const Eigen::Vector3d n = normal.normalized();
+      c = p0 + n * n.dot(centroid - p0);
+    }
+    for (int i : members) {
+      const Eigen::Vector3d a = m.X[open[i].first] - p0, b = m.X[open[i].second] - p0;
+      V += (c - p0).dot(b.cross(a)) / 6.0;
+    }
+  }
+  return V;
+}
+
+std::vector<std::string> pressure_load_warnings(const System& system) {
+  const Model& m = system.model();
+  std::vector<std::string> out;
+  const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(system.num_dofs());
+  const std::string unit = m.units.length_unit() + "^3";
+  for (int l = 0; l < static_cast<int>(m.loads.size()); ++l) {
+    const PressureLoad& load = m.loads[l];
+    const Part& part = m.parts[load.part];
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (const ElementBlock& b : part.blocks)
+      for (int n : b.nodes) {
+        lo = lo.cwiseMin(m.X[n]);
+        hi = hi.cwiseMax(m.X[n]);
+      }
+    const double size = (hi - lo).norm();
+    double V = 0;
+    try {
+      V = system.volume(u0, l);
+    } catch (const std::exception&) {
+      continue;  // the mesh checks speak of an element that cannot be measured
+    }
+    const double tiny = 1e-9 * size * size * size;
+    if (V < -tiny)
+      out.push_back(fmt::format(
+          "load '{}' pushes its surface (part '{}') inward: the volume on the side its pressure pushes away from is "
+          "{:.6g} {} at the reference state, negative, so the normals point into the volume the surface encloses. "
+          "A pressure inside a vessel or balloon pushes outward: set `flip: true` on the load (or reverse the "
+          "elements' node order in the mesh); a pressure from outside is meant this way.",
+          load.name, part.name, V, unit));
+    // The enclosed volume matters where it is reported or controlled.
+    bool measured = false;
+    for (const HistoryRequest& h : m.output.history) measured |= h.quantity == "volume" && h.load == l;
+    for (const Step& st : m.steps) measured |= st.volume_control.load == l;
+    if (measured && m.geometry == Geometry::three_d && !load.volume.about_axis) {
+      int open = 0;
+      const double cap = std::abs(missing_cap_volume(m, load.part, load.volume.point, &open));
+      if (open > 0 && cap > 1e-3 * std::max(std::abs(V), tiny))
+        out.push_back(fmt::format(
+            "load '{}': the surface of part '{}' has {} open edge(s) that no plane through the volume point p₀ "
+            "closes, so its enclosed volume ({:.6g} {}, measured about p₀) misses the caps that would close it "
+            "(about {:.6g} {}): history's `volume` and a volume control would not be the lumen's. For a tube, give the load `volume_axis` "
+            "(its axis; the ends are then closed by planes normal to it); for a surface cut by symmetry planes, "
+            "put `volume_point` on them.",
+            load.name, part.name, open, V, unit, cap, unit));
+    }
+  }
+  return out;
+}
+
+}  // namespace tunica

@@ -1,0 +1,29 @@
+#pragma once
+// Warnings about pressure loads that read as valid but are likely not what the user meant,
+// found at the reference state (`tunica check` and `tunica run` print them):
+//  - the load pushes its surface inward: the volume on the side the pressure pushes away from,
+//    theory manual (6.6)–(6.7), is negative, so the surface's normals point into the volume it
+//    encloses (a pressure from outside is meant that way; one inside a vessel is not);
+//  - a 3-D load whose volume is reported (history `volume`) or controlled (`volume_control`),
+//    measured about a point (no `volume_axis`), on a surface with open edges that no
+//    plane through p₀ closes: the caps that would close it are missing from the enclosed volume
+//    (an open tube without `volume_axis` reports about ⅔ of its lumen).
+#include <string>
+#include <vector>
+
+#include "assembly/system.hpp"
+
+namespace tunica {
+
+/// One message per suspicious load, each naming the load, what was measured (in the deck's
+/// length unit) and the key that fixes it.
+std::vector<std::string> pressure_load_warnings(const System& system);
+
+/// The volume of the caps that would close the open edges of a surface, measured as the load
+/// measures it (about the point p₀), each cap taken as the plane region its edges bound, from the
+/// point of its plane nearest p₀ (exact for planar caps). Open edges that lie with their
+/// neighbours in one plane through p₀ (symmetry planes, an end at p₀) need no cap and are
+/// left out. `open_edges` receives the number of open edges counted.
+double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges = nullptr);
+
+}  // namespace tunica

@@ -1,0 +1,76 @@
+// Warnings for pressure loads that read as valid but are likely not meant
+// (assembly/pressure_load_checks.hpp): a surface whose normals point into the volume it encloses,
+// and an open surface whose reported volume misses the caps that would close it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
+#include "../support/sphere_octant.hpp"
+#include "assembly/pressure_load_checks.hpp"
+
+using namespace tunica;
+using namespace tunica::test;
+
+namespace {
+
+/// The 3-D rat aorta (a quarter tube, R 0.763 mm, length 1 mm) with its lumen volume in history.
+std::string quarter_tube(const std::string& load) {
+  std::string d = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  d = replace(d, "    - {quantity: pressure, load: lumen, unit: mmHg}\n",
+              "    - {quantity: pressure, load: lumen, unit: mmHg}\n    - {quantity: volume, load: lumen, unit: mm^3}\n");
+  return replace(d, "lumen: {type: pressure, part: wall}", load);
+}
+
+std::vector<std::string> warnings_of(const std::string& deck) {
+  const Model m = read_deck_text(deck, "warn.yaml");
+  return pressure_load_warnings(System(m));
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+TEST(PressureLoadChecks, AnOpenTubeMeasuredAboutAPointMissesItsEndCap) {
+  const Model m = read_deck_text(quarter_tube("lumen: {type: pressure, part: wall}"), "open.yaml");
+  int open = 0;
+  // The quarter tube's end z = 1 mm is not closed by a plane through the origin; its cap, the
+  // quarter disc, is a cone of volume ⅓ · 1 mm · π R²/4 about p₀ (the chords' disc, 8 elements).
+  const double chord_area = 0.5 * 0.763 * 0.763 * std::sin(kPi / 16) * 8;
+  EXPECT_NEAR(std::abs(missing_cap_volume(m, 0, Eigen::Vector3d::Zero(), &open)), chord_area / 3, 1e-12);
+  EXPECT_EQ(open, 8);
+  const auto w = pressure_load_warnings(System(m));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("load 'lumen'"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("8 open edge(s)"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("`volume_axis`"), std::string::npos) << w[0];
+}
+
+TEST(PressureLoadChecks, SymmetryPlanesAndAVolumeAxisCloseTheSurface) {
+  EXPECT_TRUE(warnings_of(quarter_tube("lumen: {type: pressure, part: wall, volume_axis: [0, 0, 1]}")).empty());
+  // The sphere octant: its three open arcs lie in the symmetry planes through p₀.
+  const Model octant = read_deck_text(sphere_octant_deck("octant", 8, "", 1), "octant.yaml");
+  int open = -1;
+  EXPECT_EQ(missing_cap_volume(octant, 0, Eigen::Vector3d::Zero(), &open), 0.0);
+  EXPECT_EQ(open, 0);
+  // Without a volume reported or controlled the open tube is not worth a warning.
+  EXPECT_TRUE(warnings_of(read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml")).empty());
+}
+
+TEST(PressureLoadChecks, NormalsIntoTheEnclosedVolumeNameFlip) {
+  const auto w = warnings_of(quarter_tube("lumen: {type: pressure, part: wall, flip: true, volume_axis: [0, 0, 1]}"));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("pushes its surface (part 'wall') inward"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("`flip: true`"), std::string::npos) << w[0];
+  EXPECT_TRUE(warnings_of(quarter_tube("lumen: {type: pressure, part: wall, volume_axis: [0, 0, 1]}")).empty());
+}
+
+TEST(PressureLoadChecks, TunicaCheckPrintsTheWarningAndStillAcceptsTheDeck) {
+  const std::string deck = write_deck_file("tunica-load-checks", "inward",
+      quarter_tube("lumen: {type: pressure, part: wall, flip: true, volume_axis: [0, 0, 1]}"));
+  const Outcome o = run_cli("check " + deck);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("inward.yaml: load 'lumen' pushes its surface"), std::string::npos) << o.output;
+}
