@@ -45,7 +45,8 @@ const std::vector<std::string>& vtk_field_names(Geometry g) {
       "sigma_hoop_inner", "sigma_meridional_outer", "sigma_meridional_inner"};
   static const std::vector<std::string> three_d = {
       "displacement", "lambda_1", "lambda_2", "lambda_3", "E_1", "E_2", "E_12", "S_1", "S_2", "S_12", "sigma_1",
-      "sigma_2", "sigma_max", "sigma_min", "thickness", "part", "direction_1", "direction_2", "cauchy_stress"};
+      "sigma_2", "sigma_max", "sigma_min", "thickness", "part", "direction_1", "direction_2", "cauchy_stress",
+      "compressed"};
   return g == Geometry::axisymmetric ? axisymmetric : three_d;
 }
 

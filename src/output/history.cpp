@@ -58,6 +58,10 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
           for (const auto& p : solid_points[r.part]) vals.push_back(q->solid(p));
         } else {
           if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part);
+          if (q->membrane_whole) {
+            v = q->membrane_whole(points[r.part]);
+            break;
+          }
           for (const auto& p : points[r.part]) vals.push_back(q->membrane(p));
         }
         v = reduce(vals, r.reduce);

@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "core/bounded_file.hpp"
+#include "core/printable.hpp"
+#include "elements/membrane_compression.hpp"
 #include "output/atomic_file.hpp"
 #include "output/history.hpp"
 #include "output/output_folder.hpp"
@@ -171,6 +173,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   last_info_ = info;
   last_framed_ = wants_frame(info) || (model_.output.vtk && stop_requested());
   if (last_framed_) write_frame(analysis, info);
+  note_compression(analysis, info);
   last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}, model_.fingerprint};
   for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
     if (f->is_open()) last_->files.push_back(f->record());
@@ -188,6 +191,25 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
       std::fprintf(progress_, "step %d '%s' increment %d (fraction %.4g) converged in %d iteration(s)\n", info.step,
                    info.step_name.c_str(), info.increment, info.fraction, info.iterations);
     std::fflush(progress_);
+  }
+}
+
+void RunWriter::note_compression(const Analysis& analysis, const IncrementInfo& info) {
+  if (info.step == 0) return;  // the reference state is unstressed
+  compression_noted_.resize(model_.parts.size(), 0);
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    const Part& part = model_.parts[p];
+    if (compression_noted_[p] || part.is_solid() || part.is_shell()) continue;
+    const double f = compressed_fraction(analysis.system().points(analysis.displacement(), static_cast<int>(p)));
+    if (f <= 0.01) continue;
+    compression_noted_[p] = 1;
+    std::fprintf(stderr,
+                 "tunica: note: part '%s' is in compression over %.1f %% of its area at step %d '%s', increment %d "
+                 "(a negative principal stress): a real membrane wrinkles there, which Tunica does not model yet; "
+                 "its results there are those of a membrane that carries compression. The history quantity "
+                 "`compressed_fraction` and the ParaView field `compressed` show where.\n",
+                 terminal_safe(part.name).c_str(), 100 * f, info.step, terminal_safe(info.step_name).c_str(),
+                 info.increment);
   }
 }
 

@@ -54,6 +54,9 @@ private:
   void commit_checkpoint();
   void write_frame(const Analysis& analysis, const IncrementInfo& info);
   bool wants_frame(const IncrementInfo& info) const;
+  /// The first time a membrane part is in compression over more than 1 % of its reference area,
+  /// a note on standard error (elements/membrane_compression.hpp), once per part.
+  void note_compression(const Analysis& analysis, const IncrementInfo& info);
 
   const Model& model_;
   std::string dir_;
@@ -67,6 +70,7 @@ private:
   bool committed_ = false;             ///< last_ is in restart.txt
   IncrementInfo last_info_;            ///< the last converged increment
   bool last_framed_ = false;           ///< it has its ParaView frame
+  std::vector<char> compression_noted_;  ///< per part
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
 };
 

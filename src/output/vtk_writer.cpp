@@ -12,6 +12,8 @@
 
 #include <zlib.h>
 
+#include "elements/membrane_compression.hpp"
+
 
 namespace tunica {
 
@@ -231,9 +233,11 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
                               {"S_1" + s, {}},           {"S_2" + s, {}},           {"S_12" + s, {}},
                               {"sigma_1" + s, {}},       {"sigma_2" + s, {}},       {"sigma_max" + s, {}},
                               {"sigma_min" + s, {}},     {"thickness" + l, {}},     {"part", {}},
-                              {"direction_1", {}, 3},    {"direction_2", {}, 3},    {"cauchy_stress" + s, {}, 9}};
+                              {"direction_1", {}, 3},    {"direction_2", {}, 3},    {"cauchy_stress" + s, {}, 9},
+                              {"compressed", {}}};
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
     const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
+    const std::vector<char> compressed = compressed_points(pts);
     std::size_t k = 0;
     for (const auto& block : m.parts[p].blocks) {
       const int q = points_per_element(m.parts[p], block.kind);
@@ -258,6 +262,10 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
         for (int i = 0; i < 3; ++i) f[15].values.push_back(pts[k].e1(i));
         for (int i = 0; i < 3; ++i) f[16].values.push_back(pts[k].e2(i));
         for (int i = 0; i < 9; ++i) f[17].values.push_back(avg.cauchy(i / 3, i % 3));
+        // The fraction of the element's Gauss points in compression (where it would wrinkle).
+        double c = 0;
+        for (int g = 0; g < q; ++g) c += compressed[k + g];
+        f[18].values.push_back(c / q);
       }
     }
   }

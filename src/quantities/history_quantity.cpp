@@ -1,5 +1,7 @@
 #include "quantities/history_quantity.hpp"
 
+#include "elements/membrane_compression.hpp"
+
 #include <algorithm>
 #include <map>
 #include <stdexcept>
@@ -122,6 +124,14 @@ std::vector<Q> make_table() {
                        [](const MembranePoint& p) { return p.sigma_principal(0); }));
   t.push_back(membrane("sigma_min", stress, "minimum in-plane principal Cauchy stress",
                        [](const MembranePoint& p) { return p.sigma_principal(1); }));
+  {
+    Q q = quantity("compressed_fraction", T::part, none,
+                   "fraction of the part's reference membrane volume (area, for a uniform thickness) whose minimum "
+                   "in-plane principal Cauchy stress is negative (below −10⁻⁶ of the part's largest principal "
+                   "stress): where a membrane would wrinkle (elements/membrane_compression.hpp); `reduce` does not apply");
+    q.membrane_whole = [](const std::vector<MembranePoint>& pts) { return compressed_fraction(pts); };
+    t.push_back(q);
+  }
   t.push_back(membrane("thickness", Dimension::length, "current thickness h = λ3 H",
                        [](const MembranePoint& p) { return p.thickness; }));
   {

@@ -39,6 +39,8 @@ struct HistoryQuantity {
   std::function<double(const QuantityState&)> global;               ///< none
   std::function<double(const QuantityState&, int)> at;              ///< load: the load's index; node_set: a node
   std::function<double(const MembranePoint&)> membrane;             ///< part: membrane and shell points (empty: not on them)
+  /// part: a value of all of the part's membrane and shell points at once (its `reduce` unused)
+  std::function<double(const std::vector<MembranePoint>&)> membrane_whole;
   std::function<double(const SolidPoint&)> solid;                   ///< part: solid points (empty: not on solids)
   std::function<double(const ContactNodeState&)> contact;           ///< contact: a slave node
 };

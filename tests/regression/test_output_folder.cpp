@@ -369,7 +369,7 @@ TEST(OutputFolder, VtkFieldsOfA3dModelAndTheUserGuidesList) {
             (std::vector<std::string>{"displacement", "lambda_1", "lambda_2", "lambda_3", "E_1", "E_2", "E_12",
                                       "S_1_N_per_mm2", "S_2_N_per_mm2", "S_12_N_per_mm2", "sigma_1_N_per_mm2",
                                       "sigma_2_N_per_mm2", "sigma_max_N_per_mm2", "sigma_min_N_per_mm2", "thickness_mm",
-                                      "part", "direction_1", "direction_2", "cauchy_stress_N_per_mm2"}));
+                                      "part", "direction_1", "direction_2", "cauchy_stress_N_per_mm2", "compressed"}));
   EXPECT_EQ(float_arrays(some), (std::vector<std::string>{"sigma_max_N_per_mm2", "direction_1"}));
   EXPECT_EQ(decode_float64(some, "sigma_max_N_per_mm2"), decode_float64(full, "sigma_max_N_per_mm2"));
   // The names the deck accepts are the ones the user guide lists.

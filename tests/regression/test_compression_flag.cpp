@@ -1,0 +1,79 @@
+// Membrane compression is flagged (elements/membrane_compression.hpp): the history quantity
+// `compressed_fraction`, the ParaView cell field `compressed` and a note when a part first goes
+// into compression. A neo-Hookean quarter tube under 1 kPa, its length shortened by 5 %, carries
+// axial compression everywhere (a real membrane would wrinkle); stretched by 20 % it is in tension.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
+
+using namespace tunica::test;
+
+namespace {
+
+std::string tube(const std::string& stretch) {
+  return fmt::format(R"(title: neo-Hookean quarter tube, end moved by {0}
+units: {{length: mm, force: N}}
+materials:
+  rubber: {{type: neo_hookean, mu: 1 MPa}}
+parts:
+  wall:
+    element: membrane
+    material: rubber
+    thickness: 0.05 mm
+    mesh: {{type: tube, radius: 1 mm, length: 2 mm, sector: 90 deg, around: 8, along: 4, shape: triangle}}
+boundary:
+  sym_x: {{node_set: wall.x0, dofs: [x]}}
+  sym_y: {{node_set: wall.y0, dofs: [y]}}
+  base: {{node_set: wall.bottom, dofs: [z]}}
+  stretch: {{node_set: wall.top, dofs: [z]}}
+loads:
+  lumen: {{type: pressure, part: wall}}
+steps:
+  - {{name: load, increments: 4, set: {{stretch: {0}, lumen: 1 kPa}}}}
+output:
+  vtk_format: ascii
+  history:
+    - {{quantity: compressed_fraction, part: wall}}
+)",
+                     stretch);
+}
+
+/// The last row's last column of a history.csv.
+double last_value(const std::string& csv) {
+  const std::string row = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+  return std::stod(row.substr(row.rfind(',') + 1));
+}
+
+}  // namespace
+
+TEST(CompressionFlag, ShortenedTubeIsFlaggedInHistoryFramesAndANote) {
+  const std::string dir = (std::filesystem::temp_directory_path() / "tunica-compression").string();
+  std::filesystem::remove_all(dir);
+  const std::string deck = write_deck_file("tunica-compression-decks", "short", tube("-0.1 mm"));
+  const Outcome o = run_cli("run " + deck + " -q -o " + dir + "/short");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("note: part 'wall' is in compression over 100.0 %"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("`compressed_fraction`"), std::string::npos) << o.output;
+  const std::string h = read_text(dir + "/short/history.csv");
+  EXPECT_NE(h.find("\n0,0,0,0\n"), std::string::npos) << h;  // the unstrained reference state is not compressed
+  EXPECT_DOUBLE_EQ(last_value(h), 1.0);
+  const std::string frame = read_text(dir + "/short/vtk/surface_000004.vtu");
+  const auto at = frame.find("Name=\"compressed\"");
+  ASSERT_NE(at, std::string::npos);
+  const auto values = frame.find('>', at) + 1;
+  EXPECT_EQ(frame.substr(values, frame.find('<', values) - values).find_first_not_of("1 \n"), std::string::npos)
+      << frame.substr(values, 200);
+
+  const std::string stretched = write_deck_file("tunica-compression-decks", "long", tube("0.4 mm"));
+  const Outcome t = run_cli("run " + stretched + " -q -o " + dir + "/long");
+  ASSERT_EQ(t.exit_code, 0) << t.output;
+  EXPECT_EQ(t.output.find("compression"), std::string::npos) << t.output;
+  EXPECT_EQ(last_value(read_text(dir + "/long/history.csv")), 0.0);
+  std::filesystem::remove_all(dir);
+}
