@@ -88,6 +88,8 @@ void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, 
 
 /// What the model reads as valid but is likely not meant (assembly/pressure_load_checks.hpp).
 void print_warnings(const tunica::System& system) {
+  for (const std::string& w : system.model().warnings)
+    std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
   for (const std::string& w : tunica::pressure_load_warnings(system))
     std::fprintf(stderr, "tunica: warning: %s: %s\n", for_terminal(system.model().deck_file).c_str(),
                  for_terminal(w).c_str());
@@ -144,6 +146,7 @@ int check(const std::string& deck, const tunica::ReadOptions& options) {
               "%zu load(s), %zu step(s), %zu history column(s)\n",
               deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,
               model.boundaries.size(), model.loads.size(), model.steps.size(), model.output.history.size());
+  std::fflush(stdout);
   print_warnings(tunica::System(model));
   return 0;
 }

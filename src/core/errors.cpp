@@ -2,7 +2,7 @@
 
 namespace tunica {
 
-static std::string format_location(const SourceLocation& w, const std::string& what) {
+std::string format_location(const SourceLocation& w, const std::string& what) {
   std::string s = w.file.empty() ? std::string("<input>") : w.file;
   if (w.line > 0) {
     s.append(":").append(std::to_string(w.line));

@@ -15,6 +15,10 @@ struct SourceLocation {
   std::string key;  ///< dotted key path, e.g. "materials.aorta.c"
 };
 
+/// "file:line:column: key 'k': what" (the parts that are known): how messages about an input
+/// (errors and warnings) say where.
+std::string format_location(const SourceLocation& where, const std::string& what);
+
 /// A user error in an input: the message reads "file:line:column: key: what".
 class InputError : public std::runtime_error {
 public:

@@ -458,6 +458,20 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
         const Dimension dim = !is_boundary ? Dimension::pressure : positions == 0 && slopes > 0 ? Dimension::dimensionless
                                                                                                 : Dimension::length;
         s.targets[target] = read_quantity(value, dim, m.units);
+        // A pressure without a unit is in the deck's units (N/mm² = MPa for mm and N): 150 meant as
+        // mmHg is a million mmHg. Valid, but said.
+        double written = 0;
+        std::string unit;
+        if (is_load && value.is_scalar() && split_quantity(value.as_string(), written, unit) && unit.empty() &&
+            written != 0)
+          m.warnings.push_back(format_location(
+              value.where(),
+              fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = {:.4g} mmHg); "
+                          "write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
+                          value.as_string(), m.units.force_unit() + "/" + m.units.length_unit() + "²",
+                          m.units.from_internal(s.targets[target], "kPa", Dimension::pressure),
+                          m.units.from_internal(s.targets[target], "mmHg", Dimension::pressure), value.as_string(),
+                          value.as_string())));
         if (slopes > 0 && positions > 0 && s.targets[target] != 0)
           value.fail("boundary '" + target + "' holds slopes and positions: it can only be 0 (give the slopes their "
                      "own boundary to prescribe them)");

@@ -270,6 +270,8 @@ struct Model {
   std::vector<ContactPair> contacts;
   std::vector<Step> steps;
   OutputSettings output;
+  /// What the deck reader found valid but likely not meant, each "file:line:column: key 'k': what".
+  std::vector<std::string> warnings;
   /// What the converged states depend on (io/deck_fingerprint.hpp), in deck order.
   std::vector<FingerprintEntry> fingerprint;
 

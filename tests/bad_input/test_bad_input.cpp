@@ -191,3 +191,16 @@ TEST(BadInput, HistoryColumnThatIsAlwaysWritten) {
                "    - {quantity: time}\n    - {quantity: pressure, load: lumen, unit: mmHg}\n", "output.history[0]",
                "always the first three columns", "    - {quantity: time}");
 }
+
+TEST(BadInput, APressureWithoutAUnitIsValidButSaid) {
+  // 150 meant as mmHg is 150 N/mm²: the deck is valid, the warning names the line, the key, the
+  // value in kPa and mmHg, and the fix.
+  const std::string deck = write_deck("pressure-no-unit", replace(read_text(kExample), "set: {lumen: 200 mmHg}", "set: {lumen: 150}"));
+  const Outcome o = run_cli("check " + deck);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("pressure-no-unit.yaml:38:18: key 'steps[1].set.lumen': 150 has no unit"), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("1.125e+06 mmHg"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("`150 mmHg`"), std::string::npos) << o.output;
+  EXPECT_EQ(run_cli("check " + kExample).output.find("warning"), std::string::npos);
+}
