@@ -32,6 +32,9 @@ public:
   Eigen::VectorXd& state() { return u_; }
   /// The free-DOF part of a vector over all DOFs.
   Eigen::VectorXd free_part(const Eigen::VectorXd& full) const;
+  /// The contact active set the next kept evaluation's changes are counted from (a first
+  /// correction that evaluated elsewhere, the tangent predictor at u_n, hands it over).
+  void set_active_set(std::vector<char> set) { previous_set_ = std::move(set); }
   /// The Jacobian as evaluated, without the hooks (the tangent predictor assembles into it).
   SparseMatrix& raw_jacobian() { return K_; }
 

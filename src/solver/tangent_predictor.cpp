@@ -19,12 +19,14 @@ std::optional<FirstCorrection> TangentPredictor::take(
   if (dp.size() == 0 || dp.cwiseAbs().maxCoeff() == 0) return std::nullopt;
   constexpr double h = 1e-6;
   IterationRecord rec;
+  rec.relative_energy = 0;  // as at any iteration 0: no correction has been taken yet
+  std::vector<char> active_set;
   const auto t0 = std::chrono::steady_clock::now();
   Eigen::VectorXd R, Rp, Rm;
   try {
     system.assemble(un_ + h * dp, loads, Rp, nullptr);
     system.assemble(un_ - h * dp, loads, Rm, nullptr);
-    system.assemble(un_, loads, R, &K, nullptr, &rec.active_contacts);
+    system.assemble(un_, loads, R, &K, nullptr, &rec.active_contacts, &active_set);
   } catch (const std::domain_error&) {
     return std::nullopt;  // u_n is not admissible under the new loads: start plainly
   }
@@ -40,6 +42,7 @@ std::optional<FirstCorrection> TangentPredictor::take(
                        rec.solve_seconds))
     return std::nullopt;
   rec.solver = solver.used() + note;
+  problem_.set_active_set(std::move(active_set));  // iteration 1's changes are counted from u_n's
   on_iteration(rec);
   first.reference_residual = rec.residual;
   first.slope = -first.dx.dot(plain);  // Δu·(R_f + K_fp Δu_p): the energy slope along the correction (K₀ left out)
