@@ -44,7 +44,7 @@ const FileRecord* find_record(const RestartRecord& r, const std::string& name) {
 RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume)
     : model_(model), dir_(std::move(directory)), progress_(progress) {
   std::error_code ec;
-  std::filesystem::create_directories(dir_ + "/vtk", ec);
+  std::filesystem::create_directories(model.output.vtk ? dir_ + "/vtk" : dir_, ec);  // vtk/ only for frames
   if (ec) throw std::runtime_error("cannot create the output directory '" + dir_ + "': " + ec.message());
   history_header_ = "step,increment,time";
   for (const auto& r : model.output.history) history_header_ += "," + r.column;

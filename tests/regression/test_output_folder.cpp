@@ -381,3 +381,11 @@ TEST(OutputFolder, VtkFieldsOfA3dModelAndTheUserGuidesList) {
     for (const auto& name : tunica::vtk_field_names(g))
       EXPECT_NE(paragraph.find("`" + name + "`"), std::string::npos) << name << " is not in the user guide's list";
 }
+
+TEST(OutputFolder, WithoutFramesThereIsNoVtkFolder) {
+  const fs::path dir = scratch("no-vtk");
+  ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "d.yaml", "  vtk: false\n", /*one_step=*/true), dir / "out")).exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "out" / "history.csv"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "vtk"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "surface.pvd"));
+}

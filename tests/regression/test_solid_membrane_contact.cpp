@@ -35,7 +35,9 @@ TEST(SolidMembraneContact, ThePlaqueEntersThenPressesTheArteryOutwards) {
   ASSERT_EQ(c.rows.back().info.step, 2);
   ASSERT_EQ(c.rows.back().info.fraction, 1.0);
   for (const auto& it : c.iterations)
-    if (it.info.step == 1) EXPECT_EQ(it.rec.active_contacts, 0) << "the pair must wait for the plaque";
+    if (it.info.step == 1) {
+      EXPECT_EQ(it.rec.active_contacts, 0) << "the pair must wait for the plaque";
+    }
   EXPECT_GT(c.iterations.back().rec.active_contacts, 0);
   const int pc = Capture::column(m, "pc_N_per_mm2"), pen = Capture::column(m, "pen_mm"), r = Capture::column(m, "r_artery_mm");
   ASSERT_GE(pc, 0);
