@@ -8,6 +8,45 @@
 
 namespace tunica {
 
+namespace {
+
+/// The deck's unit of a dimension, as a reader writes it ("mm", "N/mm²", "rad").
+std::string unit_word(const UnitSystem& u, Dimension d) {
+  switch (d) {
+    case Dimension::length: return u.length_unit();
+    case Dimension::force: return u.force_unit();
+    case Dimension::pressure: return u.force_unit() + "/" + u.length_unit() + "²";
+    case Dimension::angle: return "rad";
+    case Dimension::volume: return u.length_unit() + "³";
+    case Dimension::penalty: return u.force_unit() + "/" + u.length_unit() + "³";
+    case Dimension::moment: return u.force_unit() + "·" + u.length_unit();
+    case Dimension::dimensionless: return "";
+  }
+  return "";
+}
+
+/// "value '<as written>' (= x <unit>) is out of range (must be … <unit>)", and for a plain
+/// number given to an angle that would fit in degrees, the fix.
+std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x, const UnitSystem& units) {
+  const std::string unit = unit_word(units, p.dim);
+  const std::string written = v.is_scalar() ? v.as_string() : fmt::format("{:g}", x);
+  double number = 0;
+  std::string typed;
+  const bool plain = split_quantity(written, number, typed) && typed.empty();
+  std::string s = plain || unit.empty() || typed == unit ? fmt::format("value {} is out of range (must be {}{})", written, range_text(p),
+                                                      unit.empty() ? "" : " " + unit)
+                                        : fmt::format("value {} (= {:g} {}) is out of range (must be {} {})", written, x,
+                                                      unit, range_text(p), unit);
+  if (p.dim == Dimension::angle && plain) {
+    const double rad = x * 3.14159265358979323846 / 180;
+    const bool fits = !(p.min && (p.min_exclusive ? rad <= *p.min : rad < *p.min)) && !(p.max && rad > *p.max);
+    if (fits) s += fmt::format(": a plain number is radians; for degrees write `{} deg`", written);
+  }
+  return s;
+}
+
+}  // namespace
+
 double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& units) {
   const std::string s = node.as_string();
   double value = 0;
@@ -87,8 +126,7 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
       for (double x : val.nums) {
         const bool below = p.min && (p.min_exclusive ? x <= *p.min : x < *p.min);
         const bool above = p.max && x > *p.max;
-        if (below || above)
-          v.fail(fmt::format("value {:g} is out of range (must be {})", x, range_text(p)));
+        if (below || above) v.fail(out_of_range_message(v, p, x, units));
       }
     }
     out.set(p.name, std::move(val));

@@ -62,7 +62,7 @@ TEST(BadContact, UnknownSlave) {
 
 TEST(BadContact, NegativePenalty) {
   expect_error("negative-penalty", "penalty: 1e3 N/mm^3", "penalty: -1e3 N/mm^3", "contact.wall_sleeve.penalty",
-               "out of range (must be > 0)");
+               "value -1e3 N/mm^3 (= -1000 N/mm³) is out of range (must be > 0 N/mm³)");
 }
 
 TEST(BadContact, PenaltyOfTheWrongDimension) {
@@ -72,7 +72,7 @@ TEST(BadContact, PenaltyOfTheWrongDimension) {
 
 TEST(BadContact, NegativeOffset) {
   expect_error("negative-offset", "offset: 0.01 mm", "offset: -0.01 mm", "contact.wall_sleeve.offset",
-               "out of range (must be >= 0)");
+               "value -0.01 mm is out of range (must be >= 0 mm)");
 }
 
 TEST(BadContact, PolylineWithOnePoint) {

@@ -86,12 +86,12 @@ TEST(BadInput, WrongTypeInteger) {
 
 TEST(BadInput, ZeroThickness) {
   expect_error("zero-thickness", "thickness: 0.122 mm", "thickness: 0 mm", "parts.wall.thickness",
-               "value 0 is out of range (must be > 0)");
+               "value 0 mm is out of range (must be > 0 mm)");
 }
 
 TEST(BadInput, NegativeThickness) {
   expect_error("negative-thickness", "thickness: 0.122 mm", "thickness: -0.122 mm", "parts.wall.thickness",
-               "value -0.122 is out of range (must be > 0)");
+               "value -0.122 mm is out of range (must be > 0 mm)");
 }
 
 TEST(BadInput, FungQuadraticFormNotPositiveDefinite) {
@@ -100,7 +100,7 @@ TEST(BadInput, FungQuadraticFormNotPositiveDefinite) {
 }
 
 TEST(BadInput, NegativeFungConstant) {
-  expect_error("fung-negative-c", "c: 61.163 kPa", "c: -61.163 kPa", "materials.aorta.c", "out of range (must be > 0)");
+  expect_error("fung-negative-c", "c: 61.163 kPa", "c: -61.163 kPa", "materials.aorta.c", "value -61.163 kPa (= -0.061163 N/mm²) is out of range (must be > 0 N/mm²)");
 }
 
 TEST(BadInput, UndefinedMaterial) {

@@ -105,11 +105,12 @@ TEST(BadMaterials, HgoDispersionAboveOneThird) {
 
 TEST(BadMaterials, HgoNegativeK1) {
   expect_error("hgo-k1", replace(kHgo, "k1: 2.3632 kPa", "k1: -2.3632 kPa"), "k1: -2.3632 kPa", "materials.aorta.k1",
-               "out of range (must be >= 0)");
+               "value -2.3632 kPa (= -0.0023632 N/mm²) is out of range (must be >= 0 N/mm²)");
 }
 
 TEST(BadMaterials, HgoFibreAngleWithoutUnitIsRadiansAndOutOfRange) {
-  // `beta: 39.98` without `deg` is 39.98 rad: refused rather than silently used.
+  // `beta: 39.98` without `deg` is 39.98 rad: refused rather than silently used, with the fix.
   expect_error("hgo-beta", replace(kHgo, "beta: 29 deg", "beta: 39.98"), "beta: 39.98", "materials.aorta.beta",
-               "value 39.98 is out of range (must be >= 0, <= 1.5708)");
+               "value 39.98 is out of range (must be >= 0, <= 1.5708 rad): a plain number is radians; for degrees "
+               "write `39.98 deg`");
 }
