@@ -1,0 +1,204 @@
+#!/usr/bin/env python3
+"""Convergence campaign: decks a user would write from the user guide, each run with the
+default solver settings (no `solver` section), and a table of what happened: converged or
+not, increments, Newton iterations per increment, cut-backs, wall time.
+
+    python3 bench/campaign/campaign.py build/tunica OUTDIR [--only SUBSTRING] [--jobs 1]
+
+Writes OUTDIR/<deck>.yaml, OUTDIR/<deck>/ (the run) and OUTDIR/campaign.md (the table). It is
+its own target, not part of the test suite (the largest decks take minutes)."""
+import argparse, csv, itertools, os, subprocess, sys, time
+
+MATERIALS = {
+    # name: (material line, pressure target with unit, thickness, radius for tubes/spheres)
+    "neo_hookean": ("{type: neo_hookean, mu: 1 MPa}", "10 kPa", "0.1 mm", "2 mm"),
+    "mooney_rivlin": ("{type: mooney_rivlin, b1: 0.5 MPa, b2: 0.05 MPa}", "10 kPa", "0.1 mm", "2 mm"),
+    "ogden": ("{type: ogden, mu: [0.63 MPa, 0.0012 MPa, -0.01 MPa], alpha: [1.3, 5.0, -2.0]}", "8 kPa", "0.1 mm", "2 mm"),
+    "fung": ("{type: fung, c: 61.163 kPa, a1: 0.68238, a2: 0.60558, a4: 0.1067}", "120 mmHg", "0.122 mm", "0.763 mm"),
+    "hgo": ("{type: hgo, mu: 30 kPa, k1: 100 kPa, k2: 5, beta: 40 deg, kappa: 0.1}", "120 mmHg", "0.3 mm", "2 mm"),
+}
+
+FRAME = "    frame: {type: cylindrical, axis: [0, 0, 1]}\n"
+
+
+def tube_closed(mat, around, along, shape, increments):
+    m, p, h, r = MATERIALS[mat]
+    return f"""title: campaign closed tube, {mat}, {around}x{along} {shape}, {increments} increment(s)
+units: {{length: mm, force: N}}
+materials:
+  wall: {m}
+parts:
+  vessel:
+    element: membrane
+    material: wall
+    thickness: {h}
+    mesh: {{type: tube, radius: {r}, length: 5 mm, around: {around}, along: {along}, shape: {shape}}}
+{FRAME}boundary:
+  bottom: {{node_set: vessel.bottom, dofs: [x, y, z]}}
+  top: {{node_set: vessel.top, dofs: [x, y, z]}}
+loads:
+  blood: {{type: pressure, part: vessel, volume_axis: [0, 0, 1]}}
+steps:
+  - {{name: inflation, increments: {increments}, set: {{blood: {p}}}}}
+output: {{vtk: false, history: [{{quantity: volume, load: blood, unit: mm^3}}]}}
+"""
+
+
+def tube_quarter_prestretch(mat, around, along, shape, increments):
+    m, p, h, r = MATERIALS[mat]
+    return f"""title: campaign quarter tube, {mat}, prestretch 1.3 then inflation, {around}x{along} {shape}
+units: {{length: mm, force: N}}
+materials:
+  wall: {m}
+parts:
+  vessel:
+    element: membrane
+    material: wall
+    thickness: {h}
+    mesh: {{type: tube, radius: {r}, length: 2 mm, sector: 90 deg, around: {around}, along: {along}, shape: {shape}}}
+{FRAME}boundary:
+  sym_x: {{node_set: vessel.x0, dofs: [x]}}
+  sym_y: {{node_set: vessel.y0, dofs: [y]}}
+  base: {{node_set: vessel.bottom, dofs: [z]}}
+  stretch: {{node_set: vessel.top, dofs: [z]}}
+loads:
+  blood: {{type: pressure, part: vessel, volume_axis: [0, 0, 1]}}
+steps:
+  - {{name: prestretch, increments: {max(1, increments // 2)}, set: {{stretch: 0.6 mm, blood: 1 kPa}}}}
+  - {{name: inflation, increments: {increments}, set: {{blood: {p}}}}}
+output: {{vtk: false}}
+"""
+
+
+def octant(mat, n, shape, increments):
+    m, p, h, r = MATERIALS[mat]
+    return f"""title: campaign sphere octant, {mat}, n {n} {shape}, {increments} increment(s)
+units: {{length: mm, force: N}}
+materials:
+  wall: {m}
+parts:
+  balloon:
+    element: membrane
+    material: wall
+    thickness: {h}
+    mesh: {{type: octant, radius: {r}, n: {n}, shape: {shape}}}
+{FRAME}boundary:
+  sym_x: {{node_set: balloon.x0, dofs: [x]}}
+  sym_y: {{node_set: balloon.y0, dofs: [y]}}
+  sym_z: {{node_set: balloon.z0, dofs: [z]}}
+loads:
+  inflation: {{type: pressure, part: balloon}}
+steps:
+  - {{name: inflate, increments: {increments}, set: {{inflation: {p}}}}}
+output: {{vtk: false}}
+"""
+
+
+def axisym_tube(mat, elements, increments):
+    m, p, h, r = MATERIALS[mat]
+    return f"""title: campaign axisymmetric tube, {mat}, {elements} elements
+units: {{length: mm, force: N}}
+materials:
+  wall: {m}
+parts:
+  wall:
+    element: axisymmetric_membrane
+    material: wall
+    thickness: {h}
+    mesh: {{type: line, from: [{r}, 0 mm], to: [{r}, 2 mm], elements: {elements}}}
+boundary:
+  base: {{node_set: wall.start, dofs: [z]}}
+  stretch: {{node_set: wall.end, dofs: [z]}}
+loads:
+  lumen: {{type: pressure, part: wall}}
+steps:
+  - {{name: prestretch, increments: {max(1, increments // 2)}, set: {{stretch: 0.6 mm}}}}
+  - {{name: inflation, increments: {increments}, set: {{lumen: {p}}}}}
+output: {{vtk: false}}
+"""
+
+
+def decks():
+    out = {}
+    for mat in MATERIALS:
+        out[f"closed-tube-{mat}-tri-64x16-10inc"] = tube_closed(mat, 64, 16, "staggered_triangle", 10)
+        out[f"closed-tube-{mat}-quad-64x16-1inc"] = tube_closed(mat, 64, 16, "quad", 1)
+        out[f"quarter-tube-{mat}-quad-16x8"] = tube_quarter_prestretch(mat, 16, 8, "quad", 6)
+        out[f"quarter-tube-{mat}-tri-16x8"] = tube_quarter_prestretch(mat, 16, 8, "triangle", 6)
+        out[f"octant-{mat}-quad-n12-1inc"] = octant(mat, 12, "quad", 1)
+        out[f"octant-{mat}-tri-n12-10inc"] = octant(mat, 12, "triangle", 10)
+        out[f"axisym-tube-{mat}-20"] = axisym_tube(mat, 20, 10)
+    for mat in ("hgo", "neo_hookean"):
+        out[f"closed-tube-{mat}-tri-256x64-10inc"] = tube_closed(mat, 256, 64, "staggered_triangle", 10)
+        out[f"octant-{mat}-quad-n58-10inc"] = octant(mat, 58, "quad", 10)
+    # The shipped examples as they are, and the angioplasty balloon made softer.
+    here = os.path.dirname(os.path.abspath(__file__))
+    examples = os.path.join(here, "..", "..", "examples")
+    for f in sorted(os.listdir(examples)):
+        if f.endswith(".yaml"):
+            text = open(os.path.join(examples, f)).read()
+            text = text.replace("file: meshes/", "file: " + os.path.join(os.path.abspath(examples), "meshes") + "/")
+            out["example-" + f[:-5]] = text
+    angioplasty = out["example-balloon-angioplasty"]
+    for b1, b2 in (("1.5", "0.375"), ("1.0", "0.25")):
+        out[f"angioplasty-balloon-b1-{b1}-b2-{b2}"] = angioplasty.replace(
+            "balloon: {type: mooney_rivlin, b1: 2.0 MPa, b2: 0.5 MPa}", f"balloon: {{type: mooney_rivlin, b1: {b1} MPa, b2: {b2} MPa}}")
+    return out
+
+
+def summarize(run_dir):
+    """(increments, iterations, max per increment, cut-backs) from newton.csv."""
+    path = os.path.join(run_dir, "newton.csv")
+    if not os.path.exists(path):
+        return 0, 0, 0, 0
+    attempts = {}
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            key = (int(row["step"]), int(row["increment"]), int(row["attempt"]))
+            attempts[key] = max(attempts.get(key, 0), int(row["iteration"]))
+    finals = {}
+    for (s, i, a), it in attempts.items():
+        if (s, i) not in finals or a > finals[(s, i)][0]:
+            finals[(s, i)] = (a, it)
+    cutbacks = sum(1 for (s, i, a) in attempts if a > 0)
+    its = [it for a, it in finals.values()]
+    return len(finals), sum(its), max(its) if its else 0, cutbacks
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("tunica")
+    ap.add_argument("outdir")
+    ap.add_argument("--only", default="")
+    args = ap.parse_args()
+    os.makedirs(args.outdir, exist_ok=True)
+    rows = []
+    for name, text in decks().items():
+        if args.only not in name:
+            continue
+        deck = os.path.join(args.outdir, name + ".yaml")
+        with open(deck, "w") as f:
+            f.write(text)
+        run = os.path.join(args.outdir, name)
+        t0 = time.time()
+        p = subprocess.run([args.tunica, "run", deck, "-q", "--allow-scripts", "-o", run], capture_output=True, text=True)
+        dt = time.time() - t0
+        inc, its, most, cut = summarize(run)
+        rows.append((name, p.returncode, inc, its, most, cut, dt, (p.stderr.strip().splitlines() or [""])[-1][:160]))
+        print(f"{name}: exit {p.returncode}, {inc} increments, {its} iterations, max {most}, {cut} cut-backs, {dt:.1f} s",
+              flush=True)
+    with open(os.path.join(args.outdir, "campaign.md"), "w") as f:
+        f.write("| deck | exit | increments | iterations / increment | max | cut-backs | wall s |\n|---|---|---|---|---|---|---|\n")
+        for name, rc, inc, its, most, cut, dt, err in rows:
+            f.write(f"| {name} | {rc} | {inc} | {its / inc if inc else 0:.2f} | {most} | {cut} | {dt:.1f} |\n")
+        failed = [r for r in rows if r[1] != 0]
+        n = sum(r[2] for r in rows)
+        f.write(f"\n{len(rows) - len(failed)} of {len(rows)} decks converged with the defaults; "
+                f"{sum(r[3] for r in rows) / n if n else 0:.2f} iterations per increment over all.\n")
+        for r in failed:
+            f.write(f"\n- {r[0]} (exit {r[1]}): {r[7]}\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
