@@ -23,19 +23,17 @@ struct Chains {
   void join(int a, int b) { parent[find(a)] = find(b); }
 };
 
-}  // namespace
-
-double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges) {
-  // Edges of the corner polygons, counted over the part; an open edge is used once, with the
-  // direction its element gives it.
+/// The open edges of a 3-D surface part (corner edges used by one element, as that element runs
+/// them) and its longest edge; none for a part that is not a surface.
+std::vector<std::pair<int, int>> open_edges_of(const Model& m, int part, double& longest) {
   struct Use {
     int count = 0;
     std::pair<int, int> directed;  // a → b as its element runs it
   };
   std::map<std::pair<int, int>, Use> edges;  // by sorted node pair
-  double longest = 0;
+  longest = 0;
   for (const ElementBlock& b : m.parts[part].blocks) {
-    if (!is_surface_kind(b.kind)) return 0;
+    if (!is_surface_kind(b.kind)) return {};
     const int c = corner_nodes(b.kind);
     for (int e = 0; e < b.size(); ++e) {
       const int* en = b.element(e);
@@ -50,6 +48,43 @@ double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, i
   std::vector<std::pair<int, int>> open;
   for (const auto& [key, rec] : edges)
     if (rec.count == 1) open.push_back(rec.directed);
+  return open;
+}
+
+}  // namespace
+
+std::vector<UnheldEdges> unheld_open_edges(const Model& m, int part) {
+  double longest = 0;
+  const auto open = open_edges_of(m, part, longest);
+  std::vector<char> held(m.num_nodes(), 0);
+  for (const Boundary& b : m.boundaries)
+    for (int n : m.node_sets[b.node_set].nodes) held[n] = 1;
+  Chains chains;
+  for (const auto& e : open) chains.join(e.first, e.second);
+  std::map<int, UnheldEdges> by_chain;
+  std::map<int, bool> any_held;
+  for (const auto& e : open) {
+    const int root = chains.find(e.first);
+    UnheldEdges& c = by_chain[root];
+    ++c.edges;
+    c.centre += 0.5 * (m.X[e.first] + m.X[e.second]);
+    if (c.node < 0) c.node = e.first;
+    any_held[root] = any_held[root] || held[e.first] || held[e.second];
+  }
+  std::vector<UnheldEdges> out;
+  for (auto& [root, c] : by_chain)
+    if (!any_held[root]) {
+      c.centre /= c.edges;
+      out.push_back(c);
+    }
+  return out;
+}
+
+double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges) {
+  // Edges of the corner polygons, counted over the part; an open edge is used once, with the
+  // direction its element gives it.
+  double longest = 0;
+  const std::vector<std::pair<int, int>> open = open_edges_of(m, part, longest);
   // The plane through p₀ and an edge; an edge whose plane a neighbouring open edge shares is
   // closed by that plane (a symmetry plane, an end through p₀).
   const auto plane = [&](const std::pair<int, int>& e) -> Eigen::Vector3d {
@@ -133,6 +168,14 @@ std::vector<std::string> pressure_load_warnings(const System& system) {
       continue;  // the mesh checks speak of an element that cannot be measured
     }
     const double tiny = 1e-9 * size * size * size;
+    for (const UnheldEdges& c : unheld_open_edges(m, load.part)) {
+      const long tag = c.node < static_cast<int>(m.node_tags.size()) && m.node_tags[c.node] ? m.node_tags[c.node] : c.node + 1;
+      out.push_back(fmt::format(
+          "load '{}': part '{}' has a free edge of {} element edge(s) around ({:.4g}, {:.4g}, {:.4g}) (through node {}) "
+          "that no boundary condition holds: a hole or a gap in the mesh? The pressure pushes such an edge out "
+          "unresisted by anything but the membrane; close the surface, or hold the edge in `boundary`.",
+          load.name, part.name, c.edges, c.centre(0), c.centre(1), c.centre(2), tag));
+    }
     if (V < -tiny)
       out.push_back(fmt::format(
           "load '{}' pushes its surface (part '{}') inward: the volume on the side its pressure pushes away from is "

@@ -7,13 +7,23 @@
 //  - a 3-D load whose volume is reported (history `volume`) or controlled (`volume_control`),
 //    measured about a point (no `volume_axis`), on a surface with open edges that no
 //    plane through p₀ closes: the caps that would close it are missing from the enclosed volume
-//    (an open tube without `volume_axis` reports about ⅔ of its lumen).
+//    (an open tube without `volume_axis` reports about ⅔ of its lumen);
+//  - a loaded 3-D surface with a chain of open edges that no boundary condition holds (a hole).
 #include <string>
 #include <vector>
 
 #include "assembly/system.hpp"
 
 namespace tunica {
+
+/// A chain of open edges (used by one element) of a 3-D surface part of which no node is held by
+/// a boundary condition: a hole or a gap in a wall, or a free edge.
+struct UnheldEdges {
+  int edges = 0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< mean of its edges' midpoints
+  int node = -1;                                     ///< one of its nodes
+};
+std::vector<UnheldEdges> unheld_open_edges(const Model& m, int part);
 
 /// One message per suspicious load, each naming the load, what was measured (in the deck's
 /// length unit) and the key that fixes it.

@@ -74,3 +74,43 @@ TEST(PressureLoadChecks, TunicaCheckPrintsTheWarningAndStillAcceptsTheDeck) {
   EXPECT_EQ(o.exit_code, 0) << o.output;
   EXPECT_NE(o.output.find("inward.yaml: load 'lumen' pushes its surface"), std::string::npos) << o.output;
 }
+
+TEST(PressureLoadChecks, AHoleInAWallIsAnUnheldChainOfOpenEdges) {
+  // A 4 × 4 grid of quadrilaterals in the plane z = 0 whose outer edge is held; without its
+  // element (1, 1) it has a hole, the one chain of open edges that nothing holds.
+  const auto plate = [](bool hole) {
+    Model m;
+    m.geometry = Geometry::three_d;
+    for (int j = 0; j <= 4; ++j)
+      for (int i = 0; i <= 4; ++i) m.X.emplace_back(i, j, 0.0);
+    Part p;
+    p.name = "wall";
+    ElementBlock b;
+    b.kind = ElementKind::quad4;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        if (!(hole && i == 1 && j == 1))
+          for (int n : {5 * j + i, 5 * j + i + 1, 5 * (j + 1) + i + 1, 5 * (j + 1) + i}) b.nodes.push_back(n);
+    p.blocks.push_back(b);
+    m.parts.push_back(p);
+    NodeSet edge{"wall.edge", {}};
+    for (int n = 0; n < 25; ++n)
+      if (n % 5 == 0 || n % 5 == 4 || n < 5 || n >= 20) edge.nodes.push_back(n);
+    m.node_sets.push_back(edge);
+    Boundary held;
+    held.name = "clamp";
+    held.node_set = 0;
+    held.dofs = {0, 1, 2};
+    m.boundaries.push_back(held);
+    return m;
+  };
+  EXPECT_TRUE(unheld_open_edges(plate(false), 0).empty());
+  const auto holes = unheld_open_edges(plate(true), 0);
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_EQ(holes[0].edges, 4);
+  EXPECT_NEAR((holes[0].centre - Eigen::Vector3d(1.5, 1.5, 0)).norm(), 0.0, 1e-12);
+  // Nothing held at all: the outer edge is a free edge too.
+  Model free = plate(true);
+  free.boundaries.clear();
+  EXPECT_EQ(unheld_open_edges(free, 0).size(), 2u);
+}
