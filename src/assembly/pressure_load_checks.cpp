@@ -150,7 +150,7 @@ std::vector<std::string> pressure_load_warnings(const System& system) {
   const Model& m = system.model();
   std::vector<std::string> out;
   const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(system.num_dofs());
-  const std::string unit = m.units.length_unit() + "^3";
+  const std::string unit = m.units.display_unit(Dimension::volume);
   for (int l = 0; l < static_cast<int>(m.loads.size()); ++l) {
     const PressureLoad& load = m.loads[l];
     const Part& part = m.parts[load.part];

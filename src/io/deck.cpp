@@ -468,7 +468,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
               value.where(),
               fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = {:.4g} mmHg); "
                           "write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
-                          value.as_string(), m.units.force_unit() + "/" + m.units.length_unit() + "²",
+                          value.as_string(), m.units.display_unit(Dimension::pressure),
                           m.units.from_internal(s.targets[target], "kPa", Dimension::pressure),
                           m.units.from_internal(s.targets[target], "mmHg", Dimension::pressure), value.as_string(),
                           value.as_string())));

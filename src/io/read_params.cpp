@@ -4,31 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace tunica {
 
 namespace {
 
-/// The deck's unit of a dimension, as a reader writes it ("mm", "N/mm²", "rad").
-std::string unit_word(const UnitSystem& u, Dimension d) {
-  switch (d) {
-    case Dimension::length: return u.length_unit();
-    case Dimension::force: return u.force_unit();
-    case Dimension::pressure: return u.force_unit() + "/" + u.length_unit() + "²";
-    case Dimension::angle: return "rad";
-    case Dimension::volume: return u.length_unit() + "³";
-    case Dimension::penalty: return u.force_unit() + "/" + u.length_unit() + "³";
-    case Dimension::moment: return u.force_unit() + "·" + u.length_unit();
-    case Dimension::dimensionless: return "";
-  }
-  return "";
-}
-
 /// "value '<as written>' (= x <unit>) is out of range (must be … <unit>)", and for a plain
 /// number given to an angle that would fit in degrees, the fix.
 std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x, const UnitSystem& units) {
-  const std::string unit = unit_word(units, p.dim);
+  const std::string unit = units.display_unit(p.dim);
   const std::string written = v.is_scalar() ? v.as_string() : fmt::format("{:g}", x);
   double number = 0;
   std::string typed;
@@ -38,7 +24,7 @@ std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x
                                         : fmt::format("value {} (= {:g} {}) is out of range (must be {} {})", written, x,
                                                       unit, range_text(p), unit);
   if (p.dim == Dimension::angle && plain) {
-    const double rad = x * 3.14159265358979323846 / 180;
+    const double rad = x * std::numbers::pi / 180;
     const bool fits = !(p.min && (p.min_exclusive ? rad <= *p.min : rad < *p.min)) && !(p.max && rad > *p.max);
     if (fits) s += fmt::format(": a plain number is radians; for degrees write `{} deg`", written);
   }

@@ -95,6 +95,20 @@ UnitSystem::UnitSystem(const std::string& length, const std::string& force) : le
   check_unit(force_, Dimension::force);
 }
 
+std::string UnitSystem::display_unit(Dimension d) const {
+  switch (d) {
+    case Dimension::length: return length_;
+    case Dimension::force: return force_;
+    case Dimension::pressure: return force_ + "/" + length_ + "²";
+    case Dimension::angle: return "rad";
+    case Dimension::volume: return length_ + "³";
+    case Dimension::penalty: return force_ + "/" + length_ + "³";
+    case Dimension::moment: return force_ + "·" + length_;
+    case Dimension::dimensionless: return "";
+  }
+  return "";
+}
+
 std::string UnitSystem::internal_unit(Dimension d) const {
   switch (d) {
     case Dimension::dimensionless: return "1";

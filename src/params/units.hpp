@@ -26,6 +26,9 @@ public:
   const std::string& force_unit() const { return force_; }
   /// The internal unit of a dimension as a UDUNITS string ("mm", "N", "N/mm^2", "rad", "1").
   std::string internal_unit(Dimension d) const;
+  /// The internal unit of a dimension as messages write it ("mm", "N/mm²", "mm³", "rad", "" for
+  /// dimensionless).
+  std::string display_unit(Dimension d) const;
   /// Value in `unit` converted to the internal unit of dimension d. Throws
   /// std::invalid_argument with a readable reason (unknown unit, wrong dimension).
   double to_internal(double value, const std::string& unit, Dimension d) const;

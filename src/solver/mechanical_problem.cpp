@@ -30,9 +30,7 @@ Eigen::VectorXd MechanicalProblem::free_part(const Eigen::VectorXd& full) const 
 double MechanicalProblem::evaluate(Eigen::VectorXd& r) {
   double scale = 0;
   system_.assemble(u_, loads_, R_, &K_, &scale, &active_contacts_, &active_set_);
-  r.resize(system_.num_free());
-  for (int i = 0; i < system_.num_dofs(); ++i)
-    if (system_.equation(i) >= 0) r(system_.equation(i)) = R_(i);
+  r = free_part(R_);
   return scale;
 }
 
