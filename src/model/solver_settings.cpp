@@ -31,6 +31,17 @@ const ComponentSpec& solver_settings_spec() {
         "Newton–Raphson and increment control; at the top level for all steps, or inside a step for that step.",
         {with_default(at_least(integer("max_iterations", "Newton iterations allowed per increment"), 1),
                       std::to_string(d.max_iterations)),
+         with_default(at_least(integer("max_iterations_contracting",
+                                       "Newton goes on past `max_iterations`, up to this many iterations, while each of "
+                                       "its last three iterations at least halved ‖R‖, each by a tenth more than the one before "
+                                       "(converging slowly but surely is not cut back); at or below `max_iterations`: never"),
+                               1),
+                      std::to_string(d.max_iterations_contracting)),
+         with_default(at_least(integer("stagnation_iterations",
+                                       "an attempt stops as stagnating, and is cut back, when ‖R‖ has stayed within 10 % (neither "
+                                       "falling nor climbing) over this many iterations; 0: never"),
+                               0),
+                      std::to_string(d.stagnation_iterations)),
          with_default(positive(number("residual_tolerance", Dimension::dimensionless,
                                       "convergence when ‖R‖ ≤ tol · ‖R₀‖ (R₀: residual at the start of the increment)")),
                       deck_number(d.residual_tolerance)),
@@ -80,6 +91,8 @@ const ComponentSpec& solver_settings_spec() {
 
 void set_solver_setting(SolverSettings& s, const std::string& key, const Params& p) {
   if (key == "max_iterations") s.max_iterations = static_cast<int>(p.integer(key));
+  else if (key == "max_iterations_contracting") s.max_iterations_contracting = static_cast<int>(p.integer(key));
+  else if (key == "stagnation_iterations") s.stagnation_iterations = static_cast<int>(p.integer(key));
   else if (key == "residual_tolerance") s.residual_tolerance = p.number(key);
   else if (key == "energy_tolerance") s.energy_tolerance = p.number(key);
   else if (key == "roundoff_tolerance") s.roundoff_tolerance = p.number(key);

@@ -11,6 +11,13 @@ namespace tunica {
 
 struct SolverSettings {
   int max_iterations = 12;
+  /// Newton goes on past max_iterations, up to this many, while each of its last three
+  /// iterations at least halved ‖R‖, each by a tenth more than the one before (converging slowly but
+  /// surely: no cut-back), (7.2).
+  int max_iterations_contracting = 30;
+  /// An attempt stops as stagnating (and is cut back) when ‖R‖ has stayed within 10 % over
+  /// this many iterations; 0: never.
+  int stagnation_iterations = 5;
   double residual_tolerance = 1e-9;  ///< on ‖R‖/‖R₀‖, (7.2)
   double energy_tolerance = 1e-12;   ///< on |Δu·R| relative to the first iteration, (7.2)
   /// ‖R‖ at or below this fraction of the force scale (the forces that cancel in R) is round-off:

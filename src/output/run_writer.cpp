@@ -134,6 +134,10 @@ void RunWriter::on_cutback(const IncrementInfo& info, const std::string& why) {
                  why.c_str());
 }
 
+void RunWriter::on_retry(const IncrementInfo& info, const std::string& why, const std::string& how) {
+  if (progress_) std::fprintf(progress_, "  step %d increment %d: %s; %s\n", info.step, info.increment, why.c_str(), how.c_str());
+}
+
 bool RunWriter::wants_frame(const IncrementInfo& info) const {
   if (!model_.output.vtk) return false;
   // The reference state, every vtk_every-th increment of a step, and the end of each step.

@@ -38,6 +38,7 @@ public:
 
   void on_iteration(const IncrementInfo& info, const IterationRecord& rec) override;
   void on_cutback(const IncrementInfo& info, const std::string& why) override;
+  void on_retry(const IncrementInfo& info, const std::string& why, const std::string& how) override;
   void on_increment(const Analysis& analysis, const IncrementInfo& info) override;
   /// True once SIGINT or SIGTERM has been received.
   bool stop_requested() override;

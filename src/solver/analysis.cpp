@@ -82,10 +82,16 @@ void Analysis::run_step(AnalysisObserver& observer) {
   double dt = state_.dt > 0 ? state_.dt : nominal;
   while (t < 1.0) {
     if (t + dt > 1.0 - 1e-9 * nominal) dt = 1.0 - t;
+    // From the stress-free state the stiffened first correction is the default, (7.6)–(7.8);
+    // an attempt it fails is retried once at the same size with the plain tangent before any
+    // cut-back, so that the default is never worse than `stress_free_start: exact`.
+    SolverSettings settings = step.solver;
+    const bool stiffened_start = settings.stiffen_stress_free_start && vc.load < 0 && (state_.u.array() == 0.0).all();
     IncrementInfo info;
     info.step = s + 1;
     info.step_name = step.name;
     info.increment = state_.increment + 1;
+    int cutbacks = 0;
     for (int attempt = 0;; ++attempt) {
       info.attempt = attempt;
       info.fraction = t + dt;
@@ -98,7 +104,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
       }
       Eigen::VectorXd u = state_.u;
       system_.apply_boundary(trial, u);
-      const NewtonResult r = solve_increment(system_, *solver, trial, u, step.solver,
+      const NewtonResult r = solve_increment(system_, *solver, trial, u, settings,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
                                     vc.load >= 0 ? &constraint : nullptr, &state_.u);
       if (r.converged) {
@@ -110,10 +116,16 @@ void Analysis::run_step(AnalysisObserver& observer) {
         break;
       }
       const std::string why = fmt::format("{} (last relative residual {:.3e})", r.failure, r.last_relative_residual);
+      if (stiffened_start && settings.stiffen_stress_free_start) {
+        settings.stiffen_stress_free_start = false;
+        observer.on_retry(info, why, "retrying with the plain start (stress_free_start: exact)");
+        continue;
+      }
+      settings.stiffen_stress_free_start = step.solver.stiffen_stress_free_start;
       // The increment may shrink to nominal / 2^max_cutbacks and no further, counting the
       // halvings carried over from earlier increments: time always advances.
       const double min_dt = nominal * std::ldexp(1.0, -step.solver.max_cutbacks);
-      if (attempt >= step.solver.max_cutbacks || 0.5 * dt < min_dt * (1 - 1e-12)) {
+      if (cutbacks >= step.solver.max_cutbacks || 0.5 * dt < min_dt * (1 - 1e-12)) {
         throw SolveError(fmt::format(
             "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
             "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
@@ -121,6 +133,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
             failure_hints(model_, step, r, converged)));
       }
       observer.on_cutback(info, why);
+      ++cutbacks;
       dt *= 0.5;
       state_.reduced_successes = 0;
     }

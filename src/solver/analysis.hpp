@@ -1,7 +1,8 @@
 #pragma once
 // Steps and increments: each step ramps its boundary and load targets
 // linearly; each increment is solved by Newton. An increment that does not
-// converge is halved and retried (at most `max_cutbacks` times in a row), and
+// converge is halved and retried (at most `max_cutbacks` times in a row; from the
+// stress-free state a failed stiffened start is first retried with the plain one), and
 // the increment size grows back after two converged reduced increments.
 // The whole progress state is a Checkpoint, so that a run can be resumed
 // exactly where a converged increment left it.
@@ -18,7 +19,7 @@ struct IncrementInfo {
   int step = 0;            ///< 1-based
   std::string step_name;
   int increment = 0;       ///< 1-based converged increment within the step
-  int attempt = 0;         ///< 0 for the first try of this increment, +1 per cut-back
+  int attempt = 0;         ///< 0 for the first try of this increment, +1 per cut-back or retry
   double fraction = 0;     ///< fraction of the step done at the end of the increment
   double time = 0;         ///< step − 1 + fraction
   int iterations = 0;      ///< Newton iterations of the converged attempt
@@ -44,6 +45,8 @@ public:
   virtual ~AnalysisObserver() = default;
   virtual void on_iteration(const IncrementInfo&, const IterationRecord&) {}
   virtual void on_cutback(const IncrementInfo&, const std::string& /*why*/) {}
+  /// A failed attempt retried at the same size another way (`how`).
+  virtual void on_retry(const IncrementInfo&, const std::string& /*why*/, const std::string& /*how*/) {}
   /// After each converged increment, and once for the reference state (step 0).
   virtual void on_increment(const Analysis&, const IncrementInfo&) {}
   /// Asked after each converged increment: true stops the run (Interrupted).

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace tunica {
 
@@ -15,6 +17,7 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
   double r0 = 0, e1 = 0, energy = 0, previous_residual = 0;
   double slope0 = 0;  // Δx·r(x) of the correction Δx being tried (line search; halved with it)
   int k0 = 0;
+  std::vector<double> residuals;  // ‖R‖ of every iteration of this attempt
   if (first) {
     if (auto f = first->take(solver, on_iteration)) {
       dx = std::move(f->dx);
@@ -86,10 +89,33 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
       result.failure = "diverging";
       return result;
     }
-    if (k == settings.max_iterations) {
+    residuals.push_back(rec.residual);
+    const std::size_t n = residuals.size();
+    // Stagnating: the last m + 1 residuals lie within 10 % of each other (neither falling nor
+    // climbing out: a residual that rises and falls is still searching).
+    const auto flat = [&](int m) {
+      if (m <= 0 || n <= static_cast<std::size_t>(m)) return false;
+      const auto [lo, hi] = std::minmax_element(residuals.end() - (m + 1), residuals.end());
+      return *hi < *lo / 0.9;
+    };
+    if (const int m = settings.stagnation_iterations; flat(m)) {
       on_iteration(rec);
-      result.failure = fmt::format("no convergence in {} iterations", settings.max_iterations);
+      result.failure = fmt::format("stagnating (‖R‖ within 10 % over the last {} iterations)", m);
       return result;
+    }
+    if (k >= settings.max_iterations) {
+      // Past the limit only while converging surely: each of the last three iterations halved ‖R‖
+      // at a rate that improves by 10 % each time (q₁ < 0.9 q₂ < 0.81 q₃ ≤ 0.405, Newton entering
+      // its quadratic basin). A steady
+      // rate is not enough: far out on an exponential material each correction removes a fixed
+      // part of the exponent, and ‖R‖ falls at a constant rate from an absurd R₀.
+      const auto q = [&](std::size_t i) { return residuals[n - i] / residuals[n - i - 1]; };
+      const bool contracting = n >= 4 && q(3) <= 0.5 && q(2) < 0.9 * q(3) && q(1) < 0.9 * q(2);
+      if (!contracting || k >= settings.max_iterations_contracting) {
+        on_iteration(rec);
+        result.failure = fmt::format("no convergence in {} iterations", k);
+        return result;
+      }
     }
     const SparseMatrix& J = problem.jacobian(k);
     std::string note;

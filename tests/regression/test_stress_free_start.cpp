@@ -148,3 +148,44 @@ TEST(StressFreeStart, PrescribedNormalMotionEntersThePredictorThroughTheStartSti
   EXPECT_GT(stiffened, exact);
   EXPECT_NEAR(stiffened, 0.2, 0.05);
 }
+
+TEST(StressFreeStart, AFailedStiffenedStartIsRetriedPlainAtTheSameSizeBeforeACutBack) {
+  // The campaign's closed Fung tube (64 × 16 quads) inflated from rest to 120 mmHg in one
+  // increment: the stiffened attempt does not converge in 12 iterations. The next attempt has
+  // the same size and the plain start; only then is the increment cut back.
+  const std::string deck = R"(title: closed Fung tube from rest in one increment
+units: {length: mm, force: N}
+materials:
+  wall: {type: fung, c: 61.163 kPa, a1: 0.68238, a2: 0.60558, a4: 0.1067}
+parts:
+  vessel:
+    element: membrane
+    material: wall
+    thickness: 0.122 mm
+    mesh: {type: tube, radius: 0.763 mm, length: 5 mm, around: 64, along: 16, shape: quad}
+    frame: {type: cylindrical, axis: [0, 0, 1]}
+boundary:
+  bottom: {node_set: vessel.bottom, dofs: [x, y, z]}
+  top: {node_set: vessel.top, dofs: [x, y, z]}
+loads:
+  blood: {type: pressure, part: vessel}
+steps:
+  - {name: inflation, increments: 1, set: {blood: 120 mmHg}}
+output: {vtk: false}
+)";
+  Capture c;
+  const Model model = read_deck_text(deck, "fung-tube.yaml");
+  Analysis a(model);
+  a.run(c);
+  ASSERT_EQ(c.rows.back().info.fraction, 1.0);
+  ASSERT_GE(c.retries.size(), 1u);
+  EXPECT_EQ(c.retries.front().first.attempt, 0);
+  EXPECT_EQ(c.retries.front().first.fraction, 1.0);  // the full increment, not yet cut back
+  EXPECT_NE(c.retries.front().second.find("stress_free_start: exact"), std::string::npos);
+  // Attempt 1 is that retry: its iterations are at the full size.
+  bool retried_full = false;
+  for (const auto& it : c.iterations) retried_full |= it.info.attempt == 1 && it.info.fraction == 1.0;
+  EXPECT_TRUE(retried_full);
+  // From the first converged increment on the state is not stress free: no more retries.
+  for (const auto& r : c.retries) EXPECT_EQ(r.first.increment, 1);
+}

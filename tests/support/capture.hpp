@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/deck.hpp"
@@ -28,7 +29,9 @@ public:
   std::vector<Iteration> iterations;
   int cutbacks = 0;
   void on_iteration(const IncrementInfo& i, const IterationRecord& r) override { iterations.push_back({i, r}); }
+  std::vector<std::pair<IncrementInfo, std::string>> retries;  ///< attempt and how it was retried
   void on_cutback(const IncrementInfo&, const std::string&) override { ++cutbacks; }
+  void on_retry(const IncrementInfo& i, const std::string&, const std::string& how) override { retries.emplace_back(i, how); }
   void on_increment(const Analysis& a, const IncrementInfo& i) override { rows.push_back({i, history_values(a, i)}); }
   /// Index of a history column by name.
   static int column(const Model& m, const std::string& name) {

@@ -1,6 +1,7 @@
 // Newton's method sees a NonlinearProblem only (solver/nonlinear_problem.hpp, theory manual §7):
 // it runs on problems that have nothing to do with a mesh, with its convergence tests, its line
 // search (7.4), admissibility, side conditions and a first-correction strategy.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -187,4 +188,56 @@ TEST(NewtonOnAProblem, ASolverThatRefusesTheTangentSaysWhyAndWhichSolverTakesIt)
   auto umfpack = make_linear_solver("umfpack");
   EXPECT_TRUE(newton(q, *umfpack, SolverSettings{}, [](const IterationRecord&) {}).converged);
   EXPECT_EQ(umfpack->refusal(), "");
+}
+
+TEST(NewtonOnAProblem, ConvergingSurelyGoesPastTheLimitAndASteadyRateDoesNot) {
+  // x³ + x = 1e4 (root near 21.5) from x = 1000: each correction takes a third of x off, ‖r‖
+  // falls at a steady rate of about 8/27, then the rate improves into the quadratic basin.
+  Scalars full([](double x) { return x * x * x + x; }, [](double x) { return 3 * x * x + 1; },
+               Eigen::VectorXd::Constant(1, 1000.0), Eigen::VectorXd::Constant(1, 1e4));
+  NewtonResult result;
+  SolverSettings s;
+  s.max_iterations = 100;
+  run(full, s, result);
+  ASSERT_TRUE(result.converged) << result.failure;
+  const int needed = result.iterations;
+  ASSERT_GE(needed, 12);
+  // The limit two iterations short of it: the last three reductions improve, so Newton goes on.
+  Scalars p([](double x) { return x * x * x + x; }, [](double x) { return 3 * x * x + 1; },
+            Eigen::VectorXd::Constant(1, 1000.0), Eigen::VectorXd::Constant(1, 1e4));
+  s.max_iterations = needed - 2;
+  run(p, s, result);
+  EXPECT_TRUE(result.converged) << result.failure;
+  EXPECT_EQ(result.iterations, needed);
+  // With max_iterations_contracting at the limit it stops there.
+  Scalars q([](double x) { return x * x * x + x; }, [](double x) { return 3 * x * x + 1; },
+            Eigen::VectorXd::Constant(1, 1000.0), Eigen::VectorXd::Constant(1, 1e4));
+  s.max_iterations_contracting = s.max_iterations;
+  run(q, s, result);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.failure, fmt::format("no convergence in {} iterations", needed - 2));
+  // eˣ = 1 from x = 40: each correction takes 1 off x, ‖r‖ falls by 1/e at a steady rate for
+  // about 37 iterations: not converging surely, no iterations past the limit.
+  Scalars e([](double x) { return std::exp(x); }, [](double x) { return std::exp(x); },
+            Eigen::VectorXd::Constant(1, 40.0), Eigen::VectorXd::Constant(1, 1.0));
+  run(e, SolverSettings{}, result);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.failure, "no convergence in 12 iterations");
+}
+
+TEST(NewtonOnAProblem, AFlatResidualStopsAsStagnating) {
+  // A tangent 1e9 times too stiff: every correction is tiny and ‖r‖ stays put.
+  Scalars p([](double x) { return x; }, [](double) { return 1e9; }, Eigen::VectorXd::Zero(1),
+            Eigen::VectorXd::Constant(1, 1.0));
+  NewtonResult result;
+  const auto records = run(p, SolverSettings{}, result);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.failure, "stagnating (‖R‖ within 10 % over the last 5 iterations)");
+  EXPECT_EQ(result.iterations, 5);
+  SolverSettings off;
+  off.stagnation_iterations = 0;
+  Scalars q([](double x) { return x; }, [](double) { return 1e9; }, Eigen::VectorXd::Zero(1),
+            Eigen::VectorXd::Constant(1, 1.0));
+  run(q, off, result);
+  EXPECT_EQ(result.failure, "no convergence in 12 iterations");
 }
