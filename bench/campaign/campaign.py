@@ -7,7 +7,7 @@ not, increments, Newton iterations per increment, cut-backs, wall time.
 
 Writes OUTDIR/<deck>.yaml, OUTDIR/<deck>/ (the run) and OUTDIR/campaign.md (the table). It is
 its own target, not part of the test suite (the largest decks take minutes)."""
-import argparse, csv, itertools, os, subprocess, sys, time
+import argparse, csv, itertools, math, os, subprocess, sys, time
 
 MATERIALS = {
     # name: (material line, pressure target with unit, thickness, radius for tubes/spheres)
@@ -131,6 +131,11 @@ def decks():
     for mat in ("hgo", "neo_hookean"):
         out[f"closed-tube-{mat}-tri-256x64-10inc"] = tube_closed(mat, 256, 64, "staggered_triangle", 10)
         out[f"octant-{mat}-quad-n58-10inc"] = octant(mat, 58, "quad", 10)
+    # Triangle HGO tubes inflated from rest in one increment (the default stiffened start), and
+    # one of about 100k elements (2 x 512 x 100 = 102,400 triangles).
+    out["closed-tube-hgo-tri-192x48-1inc"] = tube_closed("hgo", 192, 48, "staggered_triangle", 1)
+    out["closed-tube-hgo-tri-256x64-1inc"] = tube_closed("hgo", 256, 64, "staggered_triangle", 1)
+    out["closed-tube-hgo-tri-512x100-10inc"] = tube_closed("hgo", 512, 100, "staggered_triangle", 10)
     # The shipped examples as they are, and the angioplasty balloon made softer.
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "..", "examples")
@@ -147,22 +152,32 @@ def decks():
 
 
 def summarize(run_dir):
-    """(increments, iterations, max per increment, cut-backs) from newton.csv."""
+    """(increments, iterations, max per increment, cut-backs, order) from newton.csv. The order
+    is the median over the converged attempts of log r_k / log r_(k−1) for the last pair of
+    relative residuals with r_(k−1) < 1e-2 and r_k > 1e-13 (2 for quadratic convergence)."""
     path = os.path.join(run_dir, "newton.csv")
     if not os.path.exists(path):
-        return 0, 0, 0, 0
-    attempts = {}
+        return 0, 0, 0, 0, None
+    attempts, residuals = {}, {}
     with open(path) as f:
         for row in csv.DictReader(f):
             key = (int(row["step"]), int(row["increment"]), int(row["attempt"]))
             attempts[key] = max(attempts.get(key, 0), int(row["iteration"]))
+            residuals.setdefault(key, []).append(float(row["relative_residual"]))
     finals = {}
     for (s, i, a), it in attempts.items():
         if (s, i) not in finals or a > finals[(s, i)][0]:
             finals[(s, i)] = (a, it)
     cutbacks = sum(1 for (s, i, a) in attempts if a > 0)
     its = [it for a, it in finals.values()]
-    return len(finals), sum(its), max(its) if its else 0, cutbacks
+    orders = []
+    for (s, i), (a, it) in finals.items():
+        r = residuals[(s, i, a)]
+        pairs = [(r[k - 1], r[k]) for k in range(1, len(r)) if 0 < r[k - 1] < 1e-2 and r[k] > 1e-13]
+        if pairs:
+            orders.append(math.log(pairs[-1][1]) / math.log(pairs[-1][0]))
+    order = sorted(orders)[len(orders) // 2] if orders else None
+    return len(finals), sum(its), max(its) if its else 0, cutbacks, order
 
 
 def main():
@@ -183,14 +198,16 @@ def main():
         t0 = time.time()
         p = subprocess.run([args.tunica, "run", deck, "-q", "--allow-scripts", "-o", run], capture_output=True, text=True)
         dt = time.time() - t0
-        inc, its, most, cut = summarize(run)
-        rows.append((name, p.returncode, inc, its, most, cut, dt, (p.stderr.strip().splitlines() or [""])[-1][:160]))
+        inc, its, most, cut, order = summarize(run)
+        rows.append((name, p.returncode, inc, its, most, cut, dt, (p.stderr.strip().splitlines() or [""])[-1][:160], order))
         print(f"{name}: exit {p.returncode}, {inc} increments, {its} iterations, max {most}, {cut} cut-backs, {dt:.1f} s",
               flush=True)
     with open(os.path.join(args.outdir, "campaign.md"), "w") as f:
-        f.write("| deck | exit | increments | iterations / increment | max | cut-backs | wall s |\n|---|---|---|---|---|---|---|\n")
-        for name, rc, inc, its, most, cut, dt, err in rows:
-            f.write(f"| {name} | {rc} | {inc} | {its / inc if inc else 0:.2f} | {most} | {cut} | {dt:.1f} |\n")
+        f.write("| deck | exit | increments | iterations / increment | max | failed attempts | order | wall s |\n"
+                "|---|---|---|---|---|---|---|---|\n")
+        for name, rc, inc, its, most, cut, dt, err, order in rows:
+            o = "—" if order is None else f"{order:.2f}"
+            f.write(f"| {name} | {rc} | {inc} | {its / inc if inc else 0:.2f} | {most} | {cut} | {o} | {dt:.1f} |\n")
         failed = [r for r in rows if r[1] != 0]
         n = sum(r[2] for r in rows)
         f.write(f"\n{len(rows) - len(failed)} of {len(rows)} decks converged with the defaults; "
