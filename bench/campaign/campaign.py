@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Convergence campaign: decks a user would write from the user guide, each run with the
 default solver settings (no `solver` section), and a table of what happened: converged or
-not, increments, Newton iterations per increment, cut-backs, wall time.
+not, increments, Newton iterations per increment, failed attempts (cut-backs and plain-start retries), the observed order, wall time.
 
     python3 bench/campaign/campaign.py build/tunica OUTDIR [--only SUBSTRING] [--jobs 1]
 
@@ -118,6 +118,32 @@ output: {{vtk: false}}
 """
 
 
+def hgo_artery(prestretch_increments, inflation_increments):
+    """A 3-D HGO artery as the user guide describes one: R 1.5 mm, H 0.3 mm, 32 x 40 quads,
+    fibres at ±40°, stretched to λz = 1.1 under 1 kPa, then inflated to 150 mmHg."""
+    return f"""title: campaign HGO artery, 32x40 quads, lambda_z 1.1 then 150 mmHg
+units: {{length: mm, force: N}}
+materials:
+  wall: {MATERIALS["hgo"][0]}
+parts:
+  artery:
+    element: membrane
+    material: wall
+    thickness: 0.3 mm
+    mesh: {{type: tube, radius: 1.5 mm, length: 10 mm, around: 32, along: 40, shape: quad}}
+{FRAME}boundary:
+  bottom: {{node_set: artery.bottom, dofs: [x, y, z]}}
+  top_xy: {{node_set: artery.top, dofs: [x, y]}}
+  top: {{node_set: artery.top, dofs: [z]}}
+loads:
+  blood: {{type: pressure, part: artery, volume_axis: [0, 0, 1]}}
+steps:
+  - {{name: prestretch, increments: {prestretch_increments}, set: {{top: 1 mm, blood: 1 kPa}}}}
+  - {{name: inflation, increments: {inflation_increments}, set: {{blood: 150 mmHg}}}}
+output: {{vtk: false}}
+"""
+
+
 def decks():
     out = {}
     for mat in MATERIALS:
@@ -136,6 +162,9 @@ def decks():
     out["closed-tube-hgo-tri-192x48-1inc"] = tube_closed("hgo", 192, 48, "staggered_triangle", 1)
     out["closed-tube-hgo-tri-256x64-1inc"] = tube_closed("hgo", 256, 64, "staggered_triangle", 1)
     out["closed-tube-hgo-tri-512x100-10inc"] = tube_closed("hgo", 512, 100, "staggered_triangle", 10)
+    # The HGO artery of the user guide in one increment per step, and in 5 + 10.
+    out["hgo-artery-quad-32x40-1+1inc"] = hgo_artery(1, 1)
+    out["hgo-artery-quad-32x40-5+10inc"] = hgo_artery(5, 10)
     # The shipped examples as they are, and the angioplasty balloon made softer.
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "..", "examples")
@@ -152,9 +181,9 @@ def decks():
 
 
 def summarize(run_dir):
-    """(increments, iterations, max per increment, cut-backs, order) from newton.csv. The order
-    is the median over the converged attempts of log r_k / log r_(k−1) for the last pair of
-    relative residuals with r_(k−1) < 1e-2 and r_k > 1e-13 (2 for quadratic convergence)."""
+    """(increments, iterations, max per increment, failed attempts, order) from newton.csv. The order
+    is the median over the converged attempts of log r_k / log r_(k−1) for the first pair of
+    relative residuals with r_(k−1) < 1e-2 and r_k > 1e-13: 2 for quadratic convergence."""
     path = os.path.join(run_dir, "newton.csv")
     if not os.path.exists(path):
         return 0, 0, 0, 0, None
@@ -173,9 +202,11 @@ def summarize(run_dir):
     orders = []
     for (s, i), (a, it) in finals.items():
         r = residuals[(s, i, a)]
+        # The first pair inside the basin measures the order; the last one often lands on the
+        # round-off floor (1e-12 … 1e-10 relative, by model size) and reads lower.
         pairs = [(r[k - 1], r[k]) for k in range(1, len(r)) if 0 < r[k - 1] < 1e-2 and r[k] > 1e-13]
         if pairs:
-            orders.append(math.log(pairs[-1][1]) / math.log(pairs[-1][0]))
+            orders.append(math.log(pairs[0][1]) / math.log(pairs[0][0]))
     order = sorted(orders)[len(orders) // 2] if orders else None
     return len(finals), sum(its), max(its) if its else 0, cutbacks, order
 
@@ -200,7 +231,7 @@ def main():
         dt = time.time() - t0
         inc, its, most, cut, order = summarize(run)
         rows.append((name, p.returncode, inc, its, most, cut, dt, (p.stderr.strip().splitlines() or [""])[-1][:160], order))
-        print(f"{name}: exit {p.returncode}, {inc} increments, {its} iterations, max {most}, {cut} cut-backs, {dt:.1f} s",
+        print(f"{name}: exit {p.returncode}, {inc} increments, {its} iterations, max {most}, {cut} failed attempts, {dt:.1f} s",
               flush=True)
     with open(os.path.join(args.outdir, "campaign.md"), "w") as f:
         f.write("| deck | exit | increments | iterations / increment | max | failed attempts | order | wall s |\n"
