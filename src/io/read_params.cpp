@@ -6,6 +6,9 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
+
+#include "core/suggest.hpp"
 
 namespace tunica {
 
@@ -96,7 +99,7 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
         if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), val.str) == p.choices.end()) {
           std::string list;
           for (const auto& c : p.choices) list += (list.empty() ? "" : ", ") + c;
-          v.fail("'" + val.str + "' is not one of: " + list);
+          v.fail("'" + val.str + "' is not one of: " + list + did_you_mean(val.str, p.choices));
         }
         break;
       case ParamType::structured: break;
