@@ -651,12 +651,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     try {
       m.units = UnitSystem(u.text("length"), "N");
     } catch (const std::invalid_argument& e) {
-      u.fail("length", e.what());
+      u.fail("length", std::string(e.what()) + " (a length unit, e.g. mm, m, um)" +
+                           did_you_mean(u.text("length"), {"m", "cm", "mm", "um", "nm"}));
     }
     try {
       m.units = UnitSystem(u.text("length"), u.text("force"));
     } catch (const std::invalid_argument& e) {
-      u.fail("force", e.what());
+      u.fail("force", std::string(e.what()) + " (a force unit, e.g. N, mN, kN)" +
+                          did_you_mean(u.text("force"), {"N", "mN", "kN", "uN"}));
     }
   }
   const DeckNode mats = deck.required("materials");
