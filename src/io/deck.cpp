@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -622,6 +623,18 @@ void read_output(const DeckNode& deck, Model& m) {
 }
 
 
+/// (line, column) of the first tab in the indentation of a line up to `last_line` (1-based), or (0, 0).
+std::pair<int, int> indenting_tab(const std::string& text, int last_line) {
+  int line = 1;
+  for (std::size_t start = 0; start < text.size() && line <= last_line; ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    for (std::size_t i = start; i < end && (text[i] == ' ' || text[i] == '\t'); ++i)
+      if (text[i] == '\t') return {line, static_cast<int>(i - start) + 1};
+    start = end + 1;
+  }
+  return {0, 0};
+}
+
 }  // namespace
 
 std::vector<ComponentSpec> deck_sections() {
@@ -636,8 +649,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError({file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, ""},
-                     "YAML syntax error: " + e.msg);
+    const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
+    // yaml-cpp says "illegal tab when looking for indentation" or something further off: name the tab.
+    if (const auto tab = indenting_tab(text, line > 0 ? line : INT_MAX);
+        tab.first > 0 && (tab.first == line || e.msg.find("tab") != std::string::npos))
+      throw InputError({file, tab.first, tab.second, ""},
+                       "a tab indents this line, and YAML allows only spaces for indentation: replace the tab with "
+                       "spaces (YAML syntax error: " + e.msg + ")");
+    throw InputError({file, line, e.mark.is_null() ? 0 : e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
   }
   const DeckNode deck(root, file, "", {file, 1, 1, ""});
   if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");
