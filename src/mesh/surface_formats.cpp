@@ -27,9 +27,11 @@ std::string surface_format_advice(const std::string& path, const std::string& su
                        "named surface, {}",
                        file, ext == ".stl" ? "an STL" : "a VTK", gmsh(file));
   if (ext == ".vtp" || ext == ".vtu" || ext == ".obj" || ext == ".ply" || ext == ".off")
-    return fmt::format("{} is a {} surface, not a Gmsh mesh: Tunica reads .msh files (and .geo scripts). To turn it "
+    return fmt::format("{} is {} surface, not a Gmsh mesh: Tunica reads .msh files (and .geo scripts). To turn it "
                        "into a named surface, save it as STL first (ParaView: File > Save Data, STL), then {}",
-                       file, ext.substr(1), gmsh("the STL"));
+                       file, ext == ".vtp" || ext == ".vtu" ? "a VTK XML" : ext == ".obj" ? "a Wavefront OBJ"
+                                                                     : ext == ".ply" ? "a PLY" : "an OFF",
+                       gmsh("the STL"));
   return "";
 }
 
