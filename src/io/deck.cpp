@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "core/bounded_file.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
+#include "io/deck_names.hpp"
 #include "io/deck_shell_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
@@ -195,7 +197,8 @@ void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
   const std::string type = mesh.required("type").as_string();
   auto gen = meridian_types().find(type);
   if (gen == meridian_types().end())
-    mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc)");
+    mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc)" +
+                      did_you_mean(type, {"line", "arc"}));
   if (node.has("frame")) node["frame"].fail("an axisymmetric part's frame is fixed (1 = hoop, 2 = meridian)");
   const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
   if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
@@ -268,7 +271,12 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
     auto mat = m.materials.find(part.material_name);
     auto smat = m.solid_materials.find(part.material_name);
     if (mat == m.materials.end() && smat == m.solid_materials.end())
-      p.fail("material", "undefined material '" + part.material_name + "' (not in `materials`)");
+      {
+      std::vector<std::string> known = keys_of(m.materials);
+      for (const auto& k : keys_of(m.solid_materials)) known.push_back(k);
+      p.fail("material", "undefined material '" + part.material_name + "' " +
+                             known_names(part.material_name, known, "materials in `materials`"));
+    }
     if (solid && smat == m.solid_materials.end())
       p.fail("material", "material '" + part.material_name + "' is a membrane material (type " + mat->second->type() +
                              "); an axisymmetric_solid part needs a solid material (e.g. type neo_hookean_solid)");
@@ -303,7 +311,7 @@ void read_node_sets(const DeckNode& deck, Model& m) {
     if (m.find_node_set(name) >= 0) node.fail("node set '" + name + "' is already defined");
     const Params p = read_params(node, node_set_spec(), m.units);
     const int part = m.find_part(p.text("part"));
-    if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
+    if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "' " + known_names(p.text("part"), names_of(m.parts), "parts"));
     const auto& pn = m.parts[part].nodes;
     NodeSet set{name, {}};
     const DeckNode nodes = node.required("nodes");
@@ -330,14 +338,7 @@ void read_node_sets(const DeckNode& deck, Model& m) {
 
 int node_set_ref(const Params& p, const std::string& key, const Model& m) {
   const int s = m.find_node_set(p.text(key));
-  if (s < 0) {
-    std::string known;
-    std::size_t listed = 0;
-    for (const auto& set : m.node_sets)
-      if (listed++ < 30) known += (known.empty() ? "" : ", ") + set.name;
-    if (listed > 30) known += fmt::format(", ... ({} in all)", listed);
-    p.fail(key, "undefined node set '" + p.text(key) + "' (the node sets are: " + (known.empty() ? "none" : known) + ")");
-  }
+  if (s < 0) p.fail(key, "undefined node set '" + p.text(key) + "' " + known_names(p.text(key), names_of(m.node_sets), "node sets"));
   return s;
 }
 
@@ -387,7 +388,7 @@ void read_loads(const DeckNode& deck, Model& m) {
       if (b.name == name) node.fail("name '" + name + "' is already used by a boundary");
     const Params p = read_params(node, load_spec(), m.units);
     const int part = m.find_part(p.text("part"));
-    if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "'");
+    if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "' " + known_names(p.text("part"), names_of(m.parts), "parts"));
     for (const auto& block : m.parts[part].blocks)  // a kind that carries no follower pressure (solids)
       if (const ElementType& type = element_type(block.kind); !type.pressure)
         p.fail("part", "part '" + p.text("part") + "' " +
@@ -445,7 +446,11 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
         const DeckNode& value = entry.second;
         const bool is_boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == target; });
         const bool is_load = std::any_of(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == target; });
-        if (!is_boundary && !is_load) value.fail("'" + target + "' is neither a boundary nor a load");
+        if (!is_boundary && !is_load) {
+          std::vector<std::string> known = names_of(m.boundaries);
+          for (const auto& l : m.loads) known.push_back(l.name);
+          value.fail("'" + target + "' is neither a boundary nor a load " + known_names(target, known, "boundaries and loads"));
+        }
         if (const int late = entering_part(m, target); late >= 0 && static_cast<int>(m.steps.size()) < m.parts[late].enter_step)
           value.fail(fmt::format("'{}' acts on part '{}', which enters in step {} '{}': set it in that step or later",
                                  target, m.parts[late].name, m.parts[late].enter_step + 1,
@@ -482,7 +487,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       vc.expect_map_with_keys({"load", "volume"});
       const std::string load = vc.required("load").as_string();
       auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == load; });
-      if (it == m.loads.end()) vc["load"].fail("undefined pressure load '" + load + "'");
+      if (it == m.loads.end()) vc["load"].fail("undefined pressure load '" + load + "' " + known_names(load, names_of(m.loads), "loads"));
       if (s.targets.count(load)) vc["load"].fail("load '" + load + "' is also set in `set`: a volume-controlled pressure is an unknown");
       s.volume_control.load = static_cast<int>(it - m.loads.begin());
       if (const int late = m.loads[s.volume_control.load].part; static_cast<int>(m.steps.size()) < m.parts[late].enter_step)
@@ -541,7 +546,7 @@ void read_output(const DeckNode& deck, Model& m) {
     if (!q) {
       std::string list;
       for (const auto& x : history_quantities()) list += (list.empty() ? "" : ", ") + x.name;
-      h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")");
+      h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")" + did_you_mean(r.quantity, names_of(history_quantities())));
     }
     r.dim = q->dim;
     const std::string target = target_key(q->target);
@@ -557,7 +562,7 @@ void read_output(const DeckNode& deck, Model& m) {
       h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, target));
     if (q->target == QuantityTarget::part) {
       r.part = m.find_part(h.text("part"));
-      if (r.part < 0) h.fail("part", "undefined part '" + h.text("part") + "'");
+      if (r.part < 0) h.fail("part", "undefined part '" + h.text("part") + "' " + known_names(h.text("part"), names_of(m.parts), "parts"));
       if (q->geometry && *q->geometry != m.geometry)
         h.fail("quantity", "'" + r.quantity + "' is a quantity of axisymmetric parts");
       if (q->shells_only && !m.parts[r.part].is_shell())
@@ -581,12 +586,13 @@ void read_output(const DeckNode& deck, Model& m) {
     } else if (q->target == QuantityTarget::load) {
       const std::string& l = h.text("load");
       auto it = std::find_if(m.loads.begin(), m.loads.end(), [&](auto& x) { return x.name == l; });
-      if (it == m.loads.end()) h.fail("load", "undefined load '" + l + "'");
+      if (it == m.loads.end()) h.fail("load", "undefined load '" + l + "' " + known_names(l, names_of(m.loads), "loads"));
       r.load = static_cast<int>(it - m.loads.begin());
     } else if (q->target == QuantityTarget::contact) {
       const std::string& c = h.text("contact");
       auto it = std::find_if(m.contacts.begin(), m.contacts.end(), [&](auto& x) { return x.name == c; });
-      if (it == m.contacts.end()) h.fail("contact", "undefined contact pair '" + c + "'");
+      if (it == m.contacts.end())
+        h.fail("contact", "undefined contact pair '" + c + "' " + known_names(c, names_of(m.contacts), "contact pairs"));
       r.contact = static_cast<int>(it - m.contacts.begin());
     }
     r.reduce = q->reduce;
@@ -617,6 +623,18 @@ void read_output(const DeckNode& deck, Model& m) {
 }
 
 
+/// (line, column) of the first tab in the indentation of a line up to `last_line` (1-based), or (0, 0).
+std::pair<int, int> indenting_tab(const std::string& text, int last_line) {
+  int line = 1;
+  for (std::size_t start = 0; start < text.size() && line <= last_line; ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    for (std::size_t i = start; i < end && (text[i] == ' ' || text[i] == '\t'); ++i)
+      if (text[i] == '\t') return {line, static_cast<int>(i - start) + 1};
+    start = end + 1;
+  }
+  return {0, 0};
+}
+
 }  // namespace
 
 std::vector<ComponentSpec> deck_sections() {
@@ -631,8 +649,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError({file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, ""},
-                     "YAML syntax error: " + e.msg);
+    const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
+    // yaml-cpp says "illegal tab when looking for indentation" or something further off: name the tab.
+    if (const auto tab = indenting_tab(text, line > 0 ? line : INT_MAX);
+        tab.first > 0 && (tab.first == line || e.msg.find("tab") != std::string::npos))
+      throw InputError({file, tab.first, tab.second, ""},
+                       "a tab indents this line, and YAML allows only spaces for indentation: replace the tab with "
+                       "spaces (YAML syntax error: " + e.msg + ")");
+    throw InputError({file, line, e.mark.is_null() ? 0 : e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
   }
   const DeckNode deck(root, file, "", {file, 1, 1, ""});
   if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");
@@ -646,12 +670,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     try {
       m.units = UnitSystem(u.text("length"), "N");
     } catch (const std::invalid_argument& e) {
-      u.fail("length", e.what());
+      u.fail("length", std::string(e.what()) + " (a length unit, e.g. mm, m, um)" +
+                           did_you_mean(u.text("length"), {"m", "cm", "mm", "um", "nm"}));
     }
     try {
       m.units = UnitSystem(u.text("length"), u.text("force"));
     } catch (const std::invalid_argument& e) {
-      u.fail("force", e.what());
+      u.fail("force", std::string(e.what()) + " (a force unit, e.g. N, mN, kN)" +
+                          did_you_mean(u.text("force"), {"N", "mN", "kN", "uN"}));
     }
   }
   const DeckNode mats = deck.required("materials");
@@ -665,7 +691,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
       std::string list;
       for (const auto& [k, v] : material_types()) list += (list.empty() ? "" : ", ") + k;
       for (const auto& [k, v] : solid_material_types()) list += ", " + k;
-      node["type"].fail("unknown material type '" + type + "' (known: " + list + ")");
+      std::vector<std::string> known = keys_of(material_types());
+      for (const auto& k : keys_of(solid_material_types())) known.push_back(k);
+      node["type"].fail("unknown material type '" + type + "' (known: " + list + ")" + did_you_mean(type, known));
     }
     if (t != material_types().end()) {
       const Params p = read_params(node, t->second.spec, m.units, names({"type"}));

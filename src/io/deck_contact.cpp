@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "contact/axisym_contact.hpp"
+#include "io/deck_names.hpp"
 #include "contact/contact_search.hpp"
 
 namespace tunica {
@@ -109,7 +110,8 @@ void read_rigid_surfaces(const DeckNode& deck, Model& m) {
           items[i].fail("a polyline point repeats the previous one (a segment of zero length)");
       }
     } else {
-      node["type"].fail("unknown rigid surface type '" + type + "' (known: cylinder, polyline)");
+      node["type"].fail("unknown rigid surface type '" + type + "' (known: cylinder, polyline)" +
+                        did_you_mean(type, {"cylinder", "polyline"}));
     }
     m.rigid_surfaces.push_back(std::move(r));
   }
@@ -124,6 +126,13 @@ Eigen::Matrix2Xd reference_chain(const Model& m, const std::vector<int>& nodes) 
   return chain;
 }
 
+/// "(the parts and node sets are: ...)" for an undefined slave or master.
+std::string part_or_set_names(const std::string& name, const Model& m) {
+  std::vector<std::string> known = names_of(m.parts);
+  for (const auto& s : m.node_sets) known.push_back(s.name);
+  return known_names(name, known, "parts and node sets");
+}
+
 /// The slave of a rigid pair: a part (all its nodes) or a node set within one part, in meridian
 /// order, with the tributary areas of the part's meridian.
 void read_rigid_slave(const Params& p, ContactPair& c, const Model& m) {
@@ -132,7 +141,7 @@ void read_rigid_slave(const Params& p, ContactPair& c, const Model& m) {
   c.part = m.find_part(slave);
   if (c.part < 0) {
     const int s = m.find_node_set(slave);
-    if (s < 0) p.fail("slave", "undefined part or node set '" + slave + "'");
+    if (s < 0) p.fail("slave", "undefined part or node set '" + slave + "' " + part_or_set_names(slave, m));
     wanted = m.node_sets[s].nodes;
     if (wanted.empty()) p.fail("slave", "node set '" + slave + "' is empty");
     for (std::size_t k = 0; k < m.parts.size() && c.part < 0; ++k)
@@ -171,7 +180,7 @@ std::vector<int> read_chain(const Params& p, const std::string& key, const Model
     chain = m.parts[part].nodes;
   } else {
     const int s = m.find_node_set(name);
-    if (s < 0) p.fail(key, "undefined part or node set '" + name + "'");
+    if (s < 0) p.fail(key, "undefined part or node set '" + name + "' " + part_or_set_names(name, m));
     chain = m.node_sets[s].nodes;
   }
   if (chain.size() < 2)
@@ -258,7 +267,8 @@ void read_contacts(const DeckNode& deck, Model& m) {
         p.fail("master_orientation", "only a deformable `master` has an orientation (a rigid polyline's is its point order)");
       const std::string& r = p.text("rigid");
       auto it = std::find_if(m.rigid_surfaces.begin(), m.rigid_surfaces.end(), [&](auto& x) { return x.name == r; });
-      if (it == m.rigid_surfaces.end()) p.fail("rigid", "undefined rigid surface '" + r + "'");
+      if (it == m.rigid_surfaces.end())
+        p.fail("rigid", "undefined rigid surface '" + r + "' " + known_names(r, names_of(m.rigid_surfaces), "rigid surfaces"));
       c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
       read_rigid_slave(p, c, m);
     } else {

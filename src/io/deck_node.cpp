@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <map>
 
+#include "core/suggest.hpp"
+
 namespace tunica {
 
 SourceLocation DeckNode::where() const {
@@ -86,7 +88,7 @@ void DeckNode::expect_map_with_keys(const std::vector<std::string>& allowed) con
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
       DeckNode(it->first, file_, path_.empty() ? k : path_ + "." + k, where())
-          .fail("unknown key '" + k + "' (allowed here: " + list + ")");
+          .fail("unknown key '" + k + "' (allowed here: " + list + ")" + did_you_mean(k, allowed));
     }
   }
 }

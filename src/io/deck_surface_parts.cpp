@@ -9,8 +9,10 @@
 #include "elements/membrane3d.hpp"
 #include "core/printable.hpp"
 #include "io/deck_limits.hpp"
+#include "io/deck_names.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/mesh_checks.hpp"
+#include "mesh/surface_formats.hpp"
 #include "mesh/surface_generators.hpp"
 
 namespace tunica {
@@ -120,6 +122,26 @@ void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, b
   part.nodes.erase(std::unique(part.nodes.begin(), part.nodes.end()), part.nodes.end());
 }
 
+/// "no such mesh file: <path as resolved>", what a relative path is relative to, and a file
+/// of a near name in that folder.
+std::string missing_file_message(const std::string& written, const std::string& resolved) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(resolved, ec);
+  std::string s = "no such mesh file: " + printable((ec ? fs::path(resolved) : absolute).lexically_normal().string(), 200);
+  if (fs::path(written).is_relative()) s += " ('" + printable(written, 200) + "' is read relative to the deck's folder)";
+  std::vector<std::string> near;
+  const fs::path folder = fs::path(resolved).parent_path().empty() ? fs::path(".") : fs::path(resolved).parent_path();
+  std::size_t seen = 0;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end && seen < 1000; it.increment(ec), ++seen)
+    near.push_back(it->path().filename().string());
+  std::sort(near.begin(), near.end());
+  const std::string best = nearest_name(fs::path(resolved).filename().string(), near);
+  if (!best.empty()) s += "; did you mean '" + printable(best) + "'?";
+  else if (!fs::exists(folder, ec)) s += "; the folder " + printable(folder.string(), 200) + " does not exist either";
+  return s;
+}
+
 }  // namespace
 
 void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCache& cache) {
@@ -138,9 +160,11 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
     auto it = cache.files.find(key);
     if (it == cache.files.end()) {
       std::error_code ec;
-      if (!std::filesystem::exists(path, ec)) mp.fail("file", "no such mesh file: " + path);
+      if (!std::filesystem::exists(path, ec)) mp.fail("file", missing_file_message(mp.text("file"), path));
       if (!std::filesystem::is_regular_file(path, ec))
         mp.fail("file", "the mesh file " + path + " is not a regular file (a device, pipe, socket or directory)");
+      if (const std::string advice = surface_format_advice(path, mp.text("surface")); !advice.empty())
+        mp.fail("file", advice);
       SurfaceMesh sm;
       try {
         sm = read_gmsh(path, part.frame.view, cache.allow_scripts);
@@ -180,7 +204,8 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
   } else {
     auto gen = surface_generator_types().find(type);
     if (gen == surface_generator_types().end())
-      mesh["type"].fail("unknown mesh type '" + type + "' for a membrane part (known: gmsh, octant, sphere, tube)");
+      mesh["type"].fail("unknown mesh type '" + type + "' for a membrane part (known: gmsh, octant, sphere, tube)" +
+                        did_you_mean(type, {"gmsh", "octant", "sphere", "tube"}));
     if (part.frame.type == FrameRule::Type::mesh)
       frame["type"].fail("frame `mesh` needs a Gmsh mesh with an element-data view");
     const Params mp = read_params(mesh, gen->second.spec, m.units, {"type"});

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
+
+#include "core/suggest.hpp"
 
 namespace tunica {
 
@@ -31,6 +34,55 @@ std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x
   return s;
 }
 
+/// Common units of a dimension, for the nearest to a mistyped one.
+std::vector<std::string> common_units(Dimension dim) {
+  switch (dim) {
+    case Dimension::length: return {"m", "cm", "mm", "um", "nm", "in"};
+    case Dimension::force: return {"N", "mN", "kN", "uN", "dyn", "lbf"};
+    case Dimension::pressure: return {"Pa", "kPa", "MPa", "GPa", "mmHg", "bar", "psi", "atm", "N/mm^2", "N/m^2"};
+    case Dimension::angle: return {"deg", "rad", "degree"};
+    case Dimension::volume: return {"mm^3", "cm^3", "m^3", "ml", "ul"};
+    case Dimension::penalty: return {"N/mm^3", "N/m^3"};
+    case Dimension::moment: return {"N*mm", "N*m"};
+    default: return {};
+  }
+}
+
+/// ", e.g. `0.122 mm`" (the number as written with a unit of `dim`; for a mistyped unit the
+/// nearest common one, else the deck's), or "" for a dimensionless value.
+std::string unit_fix(const std::string& written, const std::string& unit, Dimension dim, const UnitSystem& units) {
+  if (dim == Dimension::dimensionless) return "";
+  const std::size_t at = unit.empty() ? std::string::npos : written.rfind(unit);
+  const std::string number = at == std::string::npos ? written : written.substr(0, at);
+  std::string fix = nearest_name(unit, common_units(dim));
+  if (fix.empty()) fix = dim == Dimension::angle ? "deg" : dim == Dimension::pressure ? "kPa" : units.internal_unit(dim);
+  std::string n = number;
+  while (!n.empty() && (n.back() == ' ' || n.back() == '\t')) n.pop_back();
+  while (!n.empty() && (n.front() == ' ' || n.front() == '\t')) n.erase(0, 1);
+  return ", e.g. `" + n + " " + fix + "`";
+}
+
+/// What a missing key's value looks like: "<a length, e.g. 1 mm>", "<one of: a, b>", ...
+std::string value_placeholder(const ParamSpec& p, const UnitSystem& units) {
+  switch (p.type) {
+    case ParamType::number:
+      return p.dim == Dimension::dimensionless ? "<a number>"
+                                               : fmt::format("<a {} in {}>", dimension_name(p.dim),
+                                                             p.dim == Dimension::angle ? "deg" : units.internal_unit(p.dim));
+    case ParamType::integer: return "<an integer>";
+    case ParamType::boolean: return "<true or false>";
+    case ParamType::numbers: return fmt::format("[<{} values>]", p.count > 0 ? std::to_string(p.count) : "the");
+    case ParamType::text: {
+      if (p.choices.empty()) return "<a name>";
+      std::string list;
+      for (const auto& c : p.choices) list += (list.empty() ? "" : " | ") + c;
+      return "<" + list + ">";
+    }
+    case ParamType::structured: return "<...>";
+  }
+  return "<...>";
+}
+
 }  // namespace
 
 double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& units) {
@@ -54,7 +106,8 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
     if (!std::isfinite(v)) node.fail("value '" + s + "' is not finite");
     return v;
   } catch (const std::invalid_argument& e) {
-    node.fail(std::string(e.what()) + " (in '" + s + "'; expected a " + dimension_name(dim) + ")");
+    node.fail(std::string(e.what()) + " (in '" + s + "'; expected a " + dimension_name(dim) + unit_fix(s, unit, dim, units) +
+              ")");
   }
 }
 
@@ -79,7 +132,9 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
       if (p.required) {
         SourceLocation w = node.where();
         w.key = given.path();
-        throw InputError(w, "missing required key '" + p.name + "' (" + p.doc + ")");
+        throw InputError(w, "missing required key '" + p.name + "' (" + p.doc + "): add `" + p.name + ": " +
+                                value_placeholder(p, units) + "` to " +
+                                (node.path().empty() ? std::string("the deck") : "'" + node.path() + "'"));
       }
       if (p.default_text.empty()) continue;
     }
@@ -96,7 +151,7 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
         if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), val.str) == p.choices.end()) {
           std::string list;
           for (const auto& c : p.choices) list += (list.empty() ? "" : ", ") + c;
-          v.fail("'" + val.str + "' is not one of: " + list);
+          v.fail("'" + val.str + "' is not one of: " + list + did_you_mean(val.str, p.choices));
         }
         break;
       case ParamType::structured: break;

@@ -22,11 +22,20 @@ struct ElementView {
     if (e < nt) return {s.triangles[e].begin(), s.triangles[e].end()};
     return {s.quads[e - nt].begin(), s.quads[e - nt].end()};
   }
+  /// The line of element e in the mesh file, or 0.
+  int line(int e) const {
+    const int nt = static_cast<int>(s.triangles.size());
+    if (e < nt) return static_cast<int>(s.triangle_lines.size()) == nt ? s.triangle_lines[e] : 0;
+    return s.quad_lines.size() == s.quads.size() ? s.quad_lines[e - nt] : 0;
+  }
   std::string name(int e) const {
     const int nt = static_cast<int>(s.triangles.size());
     const char* tri = s.triangle_midsides.empty() ? "a triangle" : "a 6-node triangle";
-    if (e < nt && static_cast<int>(s.triangle_tags.size()) == nt) return fmt::format("element {} ({})", s.triangle_tags[e], tri);
-    if (e >= nt && s.quad_tags.size() == s.quads.size()) return fmt::format("element {} (a quadrilateral)", s.quad_tags[e - nt]);
+    const std::string at = line(e) > 0 ? fmt::format(", line {}", line(e)) : "";
+    if (e < nt && static_cast<int>(s.triangle_tags.size()) == nt)
+      return fmt::format("element {} ({}{})", s.triangle_tags[e], tri, at);
+    if (e >= nt && s.quad_tags.size() == s.quads.size())
+      return fmt::format("element {} (a quadrilateral{})", s.quad_tags[e - nt], at);
     return e < nt ? fmt::format("element {} (triangle {})", e, e)
                   : fmt::format("element {} (quadrilateral {})", e, e - nt);
   }
@@ -39,6 +48,12 @@ struct ElementView {
     return "[" + out + "]";
   }
 };
+
+/// The corners of an element in the opposite order, the first kept: [a, b, c] -> [a, c, b].
+std::vector<int> reversed_corners(std::vector<int> v) {
+  std::reverse(v.begin() + 1, v.end());
+  return v;
+}
 
 /// One traversal of an edge by an element: the element, and whether it goes from the
 /// lower to the higher node index.
@@ -142,8 +157,9 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
     }
     const double tol = 1e-12 * longest2;
     if (!(area.norm() > tol))  // also catches NaN coordinates
-      return where + fmt::format("{} is degenerate (area {:.3g}, longest edge {:.3g}); its nodes are {}", ev.name(e),
-                                 area.norm(), std::sqrt(longest2), ev.list(v));
+      return where + fmt::format("{} is degenerate (area {:.3g}, longest edge {:.3g}); its nodes are {}: an element "
+                                 "must have an area; remove it or move its nodes apart (in Gmsh: remesh the surface)",
+                                 ev.name(e), area.norm(), std::sqrt(longest2), ev.list(v));
     if (m == 4) {
       const Eigen::Vector3d normal = area.normalized();
       for (int k = 0; k < 4; ++k) {
@@ -248,8 +264,12 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
                                                       ev.node(a), ev.node(b), ev.name(neighbour))
                                         : "";
     return where + fmt::format("{} is inverted: its normal is opposite to its neighbours'{}, so the orientation "
-                               "is not consistent ({} of {} connected elements inverted; nodes {})",
-                               ev.name(e), across, inverted.size(), patch.size(), ev.list(ev.nodes(e)));
+                               "is not consistent ({} of {} connected elements inverted; nodes {}): list its corner "
+                               "nodes in the opposite order ({}){}, or reverse a whole inverted patch in Gmsh "
+                               "(ReverseMesh Surface{{tag}};)",
+                               ev.name(e), across, inverted.size(), patch.size(), ev.list(ev.nodes(e)),
+                               ev.list(reversed_corners(ev.nodes(e))),
+                               s.triangle_midsides.empty() ? "" : " with the mid-edge nodes to match");
   }
   return "";
 }

@@ -90,7 +90,7 @@ private:
   }
   std::string_view required_token(const std::string& what) {
     const std::string_view t = token();
-    if (t.empty()) fail("the file ends where " + what + " was expected");
+    if (t.empty()) fail("the file ends where " + what + " was expected: it is cut short, or a count before is too large");
     return t;
   }
   long integer(const std::string& what, long lo, long hi) {
@@ -121,14 +121,32 @@ private:
       fail(fmt::format("unexpected '{}' at the end of the line", printable(b_.substr(pos_, 20))));
     }
   }
-  void expect(std::string_view word) {
+  void expect(std::string_view word, const std::string& more = "") {
     skip_space();  // the end markers follow text or the end of binary data
     const int at = line_;
     const std::string_view t = token();
     if (t != word)
       fail(t.empty() ? fmt::format("the file ends where {} was expected", word)
-                     : fmt::format("expected {}, found '{}'", word, printable(t)),
+                     : fmt::format("expected {}{}, found '{}'{}", word, more.empty() ? "" : " " + more, printable(t),
+                                   more.empty() ? "" : ": the section holds more than its count says (correct the count)"),
            lines_known_ ? at : 0);
+  }
+  /// Before item `i` (0-based) of the `n` `items` a count on line `count_line` announced (ASCII):
+  /// an end marker there means the list is shorter than the count.
+  void before_item(long i, long n, const char* items, int count_line) {
+    if (f_.binary) return;
+    skip_space();
+    if (pos_ >= b_.size() || b_[pos_] != '$') return;
+    const int at = line_;
+    const std::size_t end = std::min(b_.find_first_of(" \t\r\n", pos_), b_.size());
+    fail(fmt::format("found '{}' after {} of the {} {} announced on line {}: the section holds fewer than its count "
+                     "says (correct the count to {}, or add the missing {})",
+                     printable(b_.substr(pos_, end - pos_)), i, n, items, count_line, i, items),
+         lines_known_ ? at : 0);
+  }
+  /// "after the N <items> announced on line L" for expect().
+  static std::string after(long n, const char* items, int count_line) {
+    return fmt::format("after the {} {} announced on line {}", n, items, count_line);
   }
   std::string quoted(const std::string& what) {
     skip_space();
@@ -175,7 +193,8 @@ private:
   void fits(long n, std::size_t bytes_each, const std::string& what) {
     const std::size_t left = b_.size() - pos_;
     if (n > 0 && static_cast<std::size_t>(n) > left / bytes_each)
-      fail(fmt::format("the file announces {} {}, but only {} bytes are left in it", n, what, left));
+      fail(fmt::format("the file announces {} {}, but only {} bytes are left in it: it is cut short, or the count is wrong",
+                       n, what, left));
   }
 
   // ---------------------------------------------------------------- sections
@@ -324,6 +343,8 @@ private:
     tag4("the largest node tag");
     fits(blocks, f_.binary ? 20 : 8, "node blocks");
     for (long b = 0; b < blocks; ++b) {
+      skip_space_ascii();
+      const int block_line = line_;
       const int dim = static_cast<int>(int4("the dimension of a node block's entity", 0, 3));
       const int entity = static_cast<int>(int4("the tag of a node block's entity", INT_MIN, INT_MAX));
       const bool parametric = int4("the parametric flag of a node block", 0, 1) == 1;
@@ -332,6 +353,7 @@ private:
         fail(fmt::format("node block {} holds more nodes than the {} the section announces", b + 1, total));
       const std::size_t first = f_.nodes.size();
       for (long i = 0; i < n; ++i) {
+        before_item(i, n, "nodes of the block", block_line);
         skip_space_ascii();
         push_node(tag4("a node tag"), line_);
         f_.nodes.back().entity_dim = dim;
@@ -340,6 +362,7 @@ private:
       const int extra = parametric ? dim : 0;
       for (long i = 0; i < n; ++i) {
         MshFile::Node& nd = f_.nodes[first + static_cast<std::size_t>(i)];
+        before_item(i, n, "node coordinates of the block", block_line);
         if (!f_.binary) {
           skip_space();
           nd.line = lines_known_ ? line_ : 0;  // the line of its coordinates
@@ -354,16 +377,19 @@ private:
   }
 
   void nodes2() {
+    skip_space();
+    const int count_line = line_;
     const long n = integer("the number of nodes", 0, LONG_MAX);
     reserve_nodes(n);
     if (f_.binary) end_line();
     for (long i = 0; i < n; ++i) {
+      before_item(i, n, "nodes", count_line);
       skip_space_ascii();
       const int at = line_;
       push_node(f_.binary ? bin_int("a node tag", INT_MIN, INT_MAX) : integer("a node tag", LONG_MIN, LONG_MAX), at);
       for (int k = 0; k < 3; ++k) f_.nodes.back().x(k) = f_.binary ? bin_real("a node coordinate") : real("a node coordinate");
     }
-    expect("$EndNodes");
+    expect("$EndNodes", f_.binary ? "" : after(n, "nodes", count_line));
   }
   void skip_space_ascii() {
     if (!f_.binary) skip_space();
@@ -411,6 +437,7 @@ private:
       fits(n, (f_.binary ? 8 : 2) * static_cast<std::size_t>(1 + t.nodes), "elements");
       check_node_room(n * t.nodes);
       for (long i = 0; i < n; ++i) {
+        before_item(i, n, "elements of the block", at_block);
         skip_space_ascii();
         const int at = line_;
         push_element(tag4("an element tag"), static_cast<int>(type), dim, entity, 0, at);
@@ -423,10 +450,13 @@ private:
   }
 
   void elements2() {
+    skip_space();
+    const int count_line = line_;
     const long n = integer("the number of elements", 0, LONG_MAX);
     reserve_elements(n);
     if (!f_.binary) {
       for (long i = 0; i < n; ++i) {
+        before_item(i, n, "elements", count_line);
         skip_space();
         const int at = line_;
         const long tag = integer("an element tag", LONG_MIN, LONG_MAX);
@@ -461,7 +491,7 @@ private:
         read += count_in;
       }
     }
-    expect("$EndElements");
+    expect("$EndElements", f_.binary ? "" : after(n, "elements", count_line));
   }
 
   void element_data() {

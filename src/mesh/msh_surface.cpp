@@ -338,12 +338,14 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
       if (el.type == 9)
         out.triangle_midsides.push_back({compact[node_of(el, 3)], compact[node_of(el, 4)], compact[node_of(el, 5)]});
       out.triangle_tags.push_back(el.tag);
+      out.triangle_lines.push_back(el.line);
     }
     for (std::size_t e : s.quad) {
       const auto& el = f.elements[e];
       out.quads.push_back({compact[node_of(el, 0)], compact[node_of(el, 1)], compact[node_of(el, 2)],
                            compact[node_of(el, 3)]});
       out.quad_tags.push_back(el.tag);
+      out.quad_lines.push_back(el.line);
     }
     mesh.surfaces.push_back(std::move(out));
   }

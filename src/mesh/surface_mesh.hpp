@@ -24,6 +24,8 @@ struct SurfaceMesh {
     std::vector<Eigen::Vector3d> triangle_direction, quad_direction;
     /// Element tags as written in the mesh file (empty for generated meshes), one per triangle / quad.
     std::vector<long> triangle_tags, quad_tags;
+    /// The line each element stands on in an ASCII mesh file (0: unknown), one per triangle / quad.
+    std::vector<int> triangle_lines, quad_lines;
   };
   std::vector<Eigen::Vector3d> nodes;
   std::vector<Surface> surfaces;

@@ -84,12 +84,12 @@ TEST(BadMeshes, TheGoodSquareIsValid) {
 TEST(BadMeshes, InvertedElementIsNamed) {
   // Named by the mesh file and its own element and node tags.
   expect_error("inverted", msh("2 2 2 1 1 1 2 3\n3 2 2 1 1 1 4 3\n", 2), "", "", "parts.wall.mesh.surface",
-               "inverted/square.msh: surface 'wall': element 3 (a triangle) is inverted");
+               "inverted/square.msh: surface 'wall': element 3 (a triangle, line 21) is inverted");
 }
 
 TEST(BadMeshes, DegenerateElementIsNamed) {
   expect_error("degenerate", msh(kGood + "4 2 2 1 1 1 2 5\n", 3), "", "", "parts.wall.mesh.surface",
-               "element 4 (a triangle) is degenerate (area 0, longest edge 2); its nodes are [1, 2, 5]");
+               "element 4 (a triangle, line 22) is degenerate (area 0, longest edge 2); its nodes are [1, 2, 5]");
 }
 
 TEST(BadMeshes, MissingPhysicalSurfaceIsNamed) {

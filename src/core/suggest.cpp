@@ -1,0 +1,64 @@
+#include "core/suggest.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/printable.hpp"
+
+namespace tunica {
+
+namespace {
+
+/// Optimal string alignment distance (Levenshtein with transpositions of neighbours).
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size(), m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i)
+    for (std::size_t j = 1; j <= m; ++j) {
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[n][m];
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+}  // namespace
+
+std::string nearest_name(std::string_view name, const std::vector<std::string>& known) {
+  constexpr std::size_t kLongest = 200;  // names longer than this are not compared (a bound on the work)
+  if (name.empty() || name.size() > kLongest) return "";
+  const std::string low = lower(name);
+  std::string best;
+  std::size_t best_d = 0;
+  for (const auto& k : known) {
+    if (k == name || k.size() > kLongest) continue;
+    const std::size_t d = lower(k) == low ? 0 : edit_distance(low, lower(k));
+    if (best.empty() || d < best_d) best = k, best_d = d;
+  }
+  const std::size_t allowed = name.size() <= 5 ? 1 : 2;
+  return !best.empty() && (best_d == 0 || (best_d <= allowed && best_d < name.size())) ? best : "";
+}
+
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& known) {
+  const std::string near = nearest_name(name, known);
+  return near.empty() ? "" : "; did you mean '" + printable(near) + "'?";
+}
+
+std::string known_names(std::string_view name, const std::vector<std::string>& known, std::string_view what,
+                        std::size_t max_listed) {
+  if (known.empty()) return "(there are no " + std::string(what) + ")";
+  std::string list;
+  for (std::size_t i = 0; i < known.size() && i < max_listed; ++i) list += (list.empty() ? "" : ", ") + printable(known[i]);
+  if (known.size() > max_listed) list += ", ... (" + std::to_string(known.size()) + " in all)";
+  return "(the " + std::string(what) + " are: " + list + did_you_mean(name, known) + ")";
+}
+
+}  // namespace tunica

@@ -1,0 +1,25 @@
+#pragma once
+// Naming what exists when a deck names something that does not: the list of the
+// names there are, and for a likely typo the nearest of them ("did you mean").
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tunica {
+
+/// The name in `known` nearest to `name` by edit distance (a swap of two neighbouring letters
+/// counts as one edit), if it is near enough to be a typo: at most 1 edit for names of up to
+/// 5 characters, 2 for longer ones, and fewer edits than the name has characters; a name
+/// differing only in letter case always is. "" if none is.
+std::string nearest_name(std::string_view name, const std::vector<std::string>& known);
+
+/// "(the <what> are: a, b, c; did you mean 'b'?)" for an undefined `name`: at most
+/// `max_listed` names, then how many there are in all; "(there are no <what>)" for none.
+/// Names are quoted through printable().
+std::string known_names(std::string_view name, const std::vector<std::string>& known, std::string_view what,
+                        std::size_t max_listed = 30);
+
+/// "; did you mean 'b'?" when nearest_name finds one, else "".
+std::string did_you_mean(std::string_view name, const std::vector<std::string>& known);
+
+}  // namespace tunica

@@ -1,0 +1,281 @@
+// One test per class of input message (user guide §7, the table of message classes): each
+// writes a small bad deck (and mesh file where the class is about meshes), runs the real
+// `tunica check` and asserts the three things every message must hold: the file the problem
+// is in (deck or mesh), the number as written in that file (its line, or a Gmsh tag that is
+// not the element's position), and the suggested fix.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
+
+using namespace tunica::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
+const std::string kScratch = "tunica-message-classes-" + std::to_string(getpid());
+
+/// The rat-aorta example with `from` replaced by `to`, checked: exit 2, one line
+/// "<deck>:<line of line_text>:...key '<key>'...<what>...", which also holds `fix`.
+Outcome expect_deck_message(const std::string& name, const std::string& from, const std::string& to,
+                            const std::string& line_text, const std::string& key, const std::string& what,
+                            const std::string& fix) {
+  const Outcome o = expect_check_error(kScratch, name, replace(read_text(kExample), from, to), line_text, key, what);
+  EXPECT_NE(o.output.find(fix), std::string::npos) << "the fix '" << fix << "' is missing from: " << o.output;
+  return o;
+}
+
+// A Gmsh 2.2 mesh whose tags are not positions: nodes 11–15 ((0,0), (1,0), (1,1), (0,1), (2,0) in
+// z = 0), a line 7 on physical curve 10 "edge", triangles 15 and 16 on physical surface 1 "wall",
+// and `more` (further elements of the surface, one per line, counted in `count`).
+std::string square_msh(const std::string& more = "", int count = 0) {
+  return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 10 \"edge\"\n2 1 \"wall\"\n$EndPhysicalNames\n"
+         "$Nodes\n5\n11 0 0 0\n12 1 0 0\n13 1 1 0\n14 0 1 0\n15 2 0 0\n$EndNodes\n$Elements\n" +
+         std::to_string(3 + count) + "\n7 1 2 10 1 11 12\n15 2 2 1 1 11 12 13\n16 2 2 1 1 11 13 14\n" + more +
+         "$EndElements\n";
+}
+
+const std::string kMeshDeck = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+parts:
+  wall:
+    element: membrane
+    material: rubber
+    thickness: 0.1 mm
+    mesh: {type: gmsh, file: square.msh, surface: wall}
+boundary:
+  fixed: {node_set: edge, dofs: [x, y, z]}
+loads:
+  p: {type: pressure, part: wall}
+steps:
+  - {increments: 1, set: {p: 1 kPa}}
+)";
+
+struct MeshCase {
+  fs::path deck, mesh;
+  Outcome o;
+};
+
+/// Writes `mesh` as <dir>/<mesh_name> and the mesh deck (naming `mesh_name`) as <dir>/deck.yaml,
+/// checks it and expects exit 2 and one line of message with no raw control bytes.
+MeshCase check_mesh(const std::string& name, const std::string& mesh, const std::string& mesh_name = "square.msh") {
+  MeshCase c;
+  const fs::path dir = fs::temp_directory_path() / kScratch / name;
+  fs::create_directories(dir);
+  c.mesh = dir / mesh_name;
+  c.deck = dir / "deck.yaml";
+  std::ofstream(c.mesh, std::ios::binary) << mesh;
+  std::ofstream(c.deck) << replace(kMeshDeck, "file: square.msh", "file: " + mesh_name);
+  c.o = run_cli("check " + c.deck.string());
+  EXPECT_EQ(c.o.exit_code, 2) << c.o.output;
+  EXPECT_EQ(std::count(c.o.output.begin(), c.o.output.end(), '\n'), 1) << "one line of message: " << c.o.output;
+  return c;
+}
+
+/// `needle` is in the outcome's output.
+#define EXPECT_SAYS(o, needle) EXPECT_NE((o).output.find(needle), std::string::npos) << (o).output
+
+}  // namespace
+
+// ---------------------------------------------------------------- YAML and keys
+
+TEST(MessageClasses, TabInTheIndentation) {
+  // yaml-cpp says "illegal tab when looking for indentation"; the message names the tab.
+  const Outcome o = expect_deck_message("tab", "    a1: 0.68238", "\ta1: 0.68238", "\ta1: 0.68238", "",
+                                        "a tab indents this line", "replace the tab with spaces");
+  EXPECT_SAYS(o, "tab.yaml:" + std::to_string(line_of(read_text(kExample), "    a1: 0.68238")) + ":1:");
+}
+
+TEST(MessageClasses, UnknownKeyListsTheAllowedOnesAndTheNearest) {
+  expect_deck_message("unknown-key", "    thickness: 0.122 mm", "    tickness: 0.122 mm", "tickness:",
+                      "parts.wall.tickness", "unknown key 'tickness' (allowed here: element, material, thickness,",
+                      "did you mean 'thickness'?");
+}
+
+TEST(MessageClasses, MissingRequiredKeySaysWhatToAdd) {
+  // The message points at the map that lacks the key.
+  expect_deck_message("missing-key", "    thickness: 0.122 mm\n", "", "    element: axisymmetric_membrane",
+                      "parts.wall.thickness", "missing required key 'thickness'",
+                      "add `thickness: <a length in mm>` to 'parts.wall'");
+}
+
+// ---------------------------------------------------------------- values and units
+
+TEST(MessageClasses, UnitOfTheWrongDimensionGivesOneOfTheRightOne) {
+  expect_deck_message("wrong-unit", "thickness: 0.122 mm", "thickness: 0.122 kPa", "thickness: 0.122 kPa",
+                      "parts.wall.thickness", "unit 'kPa' is not a length", "e.g. `0.122 mm`");
+}
+
+TEST(MessageClasses, MistypedUnitGetsTheNearestUnit) {
+  expect_deck_message("unknown-unit", "c: 61.163 kPa", "c: 61.163 kPaa", "c: 61.163 kPaa", "materials.aorta.c",
+                      "unknown unit 'kPaa'", "e.g. `61.163 kPa`");
+}
+
+TEST(MessageClasses, OutOfRangeIsEchoedInTheUnitTyped) {
+  expect_deck_message("out-of-range", "thickness: 0.122 mm", "thickness: -122 um", "thickness: -122 um",
+                      "parts.wall.thickness", "value -122 um (= -0.122 mm) is out of range", "(must be > 0 mm)");
+}
+
+TEST(MessageClasses, AnglePlainNumberSuggestsDegrees) {
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 40\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  const Outcome o = expect_check_error(kScratch, "angle", deck, "beta: 40", "materials.aorta.beta",
+                                       "value 40 is out of range (must be >= 0, <= 1.5708 rad)");
+  EXPECT_SAYS(o, "for degrees write `40 deg`");
+}
+
+// ---------------------------------------------------------------- types and names
+
+TEST(MessageClasses, UnknownMaterialTypeListsTheTypes) {
+  expect_deck_message("material-type", "type: fung ", "type: fungg ", "type: fungg", "materials.aorta.type",
+                      "unknown material type 'fungg' (known: fung, hgo,", "did you mean 'fung'?");
+}
+
+TEST(MessageClasses, UnknownElementTypeListsTheTypes) {
+  expect_deck_message("element-type", "element: axisymmetric_membrane", "element: axisymetric_membrane",
+                      "element: axisymetric_membrane", "parts.wall.element",
+                      "'axisymetric_membrane' is not one of: axisymmetric_membrane, membrane,",
+                      "did you mean 'axisymmetric_membrane'?");
+}
+
+TEST(MessageClasses, UndefinedMaterialListsTheMaterials) {
+  expect_deck_message("undefined-material", "material: aorta", "material: aortta", "material: aortta",
+                      "parts.wall.material", "undefined material 'aortta' (the materials in `materials` are: aorta",
+                      "did you mean 'aorta'?");
+}
+
+TEST(MessageClasses, UndefinedNodeSetListsTheSetsAndTheNearest) {
+  expect_deck_message("undefined-set", "node_set: wall.start", "node_set: wall.strat", "node_set: wall.strat",
+                      "boundary.base.node_set", "undefined node set 'wall.strat' (the node sets are: wall.start, wall.end, wall.all",
+                      "did you mean 'wall.start'?");
+}
+
+TEST(MessageClasses, UndefinedPartListsTheParts) {
+  expect_deck_message("undefined-part", "part: wall}", "part: wal}", "part: wal}", "loads.lumen.part",
+                      "undefined part 'wal' (the parts are: wall", "did you mean 'wall'?");
+}
+
+TEST(MessageClasses, UndefinedStepTargetListsBoundariesAndLoads) {
+  expect_deck_message("undefined-target", "set: {lumen: 200 mmHg}", "set: {lumenn: 200 mmHg}", "set: {lumenn",
+                      "steps[1].set.lumenn",
+                      "'lumenn' is neither a boundary nor a load (the boundaries and loads are: base, stretch, lumen",
+                      "did you mean 'lumen'?");
+}
+
+TEST(MessageClasses, UndefinedLoadInTheOutputListsTheLoads) {
+  expect_deck_message("undefined-load", "load: lumen, unit: mmHg", "load: lumne, unit: mmHg", "load: lumne",
+                      "output.history[0].load", "undefined load 'lumne' (the loads are: lumen", "did you mean 'lumen'?");
+}
+
+TEST(MessageClasses, UndefinedContactPairListsThePairs) {
+  const std::string deck = read_text(kExample) +
+                           "rigid_surfaces:\n  sleeve: {type: cylinder, radius: 1.2 mm, side: inside}\n"
+                           "contact:\n  wall_sleeve: {slave: wall, rigid: sleeve, penalty: 1e3 N/mm^3}\n";
+  const std::string bad = replace(deck, "    - {quantity: radius, part: wall, unit: mm}\n",
+                                  "    - {quantity: radius, part: wall, unit: mm}\n"
+                                  "    - {quantity: contact_force, contact: wall_sleve}\n");
+  const Outcome o = expect_check_error(kScratch, "undefined-contact", bad, "contact: wall_sleve}", "output.history[8].contact",
+                                       "undefined contact pair 'wall_sleve' (the contact pairs are: wall_sleeve");
+  EXPECT_SAYS(o, "did you mean 'wall_sleeve'?");
+}
+
+TEST(MessageClasses, NodeNumberOutsideThePartGivesTheNumberAndTheRange) {
+  expect_deck_message("node-range", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [0, 7]}\n\nboundary:",
+                      "nodes: [0, 7]", "node_sets.mid.nodes[1]", "node index 7 is outside the part", "(0 … 1)");
+}
+
+// ---------------------------------------------------------------- mesh files named by a deck
+
+TEST(MessageClasses, MissingMeshFileGivesThePathAsResolvedAndTheNearestName) {
+  const fs::path dir = fs::temp_directory_path() / kScratch / "missing-mesh";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << square_msh();
+  const std::string deck = replace(kMeshDeck, "file: square.msh", "file: sqare.msh");
+  std::ofstream(dir / "deck.yaml") << deck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, (dir / "deck.yaml").string() + ":" + std::to_string(line_of(deck, "mesh:")) + ":");
+  EXPECT_SAYS(o, "key 'parts.wall.mesh.file': no such mesh file: " + (dir / "sqare.msh").string());
+  EXPECT_SAYS(o, "did you mean 'square.msh'?");
+}
+
+TEST(MessageClasses, SurfaceFormatsAsMeshSayHowToMakeANamedSurface) {
+  for (const std::string ext : {"stl", "vtk", "vtp", "obj", "ply"}) {
+    const MeshCase c = check_mesh("surface-" + ext, "solid wall\n", "wall." + ext);
+    EXPECT_SAYS(c.o, c.deck.string() + ":" + std::to_string(line_of(kMeshDeck, "mesh:")) + ":");
+    EXPECT_SAYS(c.o, "key 'parts.wall.mesh.file': wall." + ext + " is a");
+    EXPECT_SAYS(c.o, "add a physical surface named 'wall'");
+    EXPECT_SAYS(c.o, "save it as a .msh of version 4.1");
+  }
+}
+
+TEST(MessageClasses, DegenerateElementIsNamedByItsTagAndLineInTheMeshFile) {
+  // Element 17 is the third triangle: named 17, with its line in the .msh.
+  const std::string mesh = square_msh("17 2 2 1 1 11 12 15\n", 1);
+  const MeshCase c = check_mesh("degenerate", mesh);
+  EXPECT_SAYS(c.o, c.mesh.string() + ": surface 'wall': element 17 (a triangle, line " +
+                       std::to_string(line_of(mesh, "17 2 2 1 1")) + ") is degenerate");
+  EXPECT_SAYS(c.o, "its nodes are [11, 12, 15]");
+  EXPECT_SAYS(c.o, "remove it or move its nodes apart");
+}
+
+TEST(MessageClasses, InvertedElementIsNamedByItsTagAndLineWithTheReversedOrder) {
+  const std::string mesh = replace(square_msh(), "16 2 2 1 1 11 13 14", "16 2 2 1 1 11 14 13");
+  const MeshCase c = check_mesh("inverted", mesh);
+  EXPECT_SAYS(c.o, c.mesh.string() + ": surface 'wall': element 16 (a triangle, line " +
+                       std::to_string(line_of(mesh, "16 2 2 1 1")) + ") is inverted");
+  EXPECT_SAYS(c.o, "list its corner nodes in the opposite order ([11, 13, 14])");
+}
+
+TEST(MessageClasses, TruncatedMeshFileSaysWhereItEnds) {
+  std::string mesh = square_msh();
+  mesh = mesh.substr(0, mesh.find("16 2 2 1 1 11 13 14"));
+  const MeshCase c = check_mesh("truncated", mesh);
+  EXPECT_SAYS(c.o, c.mesh.string() + ":" + std::to_string(line_of(mesh, "15 2 2 1 1") + 1) +
+                       ": the file ends where an element tag was expected");
+  EXPECT_SAYS(c.o, "(the mesh of " + c.deck.string() + ":9, key 'parts.wall.mesh.file')");
+}
+
+TEST(MessageClasses, MeshCountThatDisagreesWithTheListSaysBoth) {
+  const std::string mesh = replace(square_msh(), "$Nodes\n5\n", "$Nodes\n6\n");
+  const MeshCase c = check_mesh("count", mesh);
+  EXPECT_SAYS(c.o, c.mesh.string() + ":" + std::to_string(line_of(mesh, "$EndNodes")) +
+                       ": found '$EndNodes' after 5 of the 6 nodes announced on line " +
+                       std::to_string(line_of(mesh, "$Nodes") + 1));
+  EXPECT_SAYS(c.o, "correct the count to 5, or add the missing nodes");
+}
+
+TEST(MessageClasses, ElementNamingAnUndefinedNodeGivesBothTags) {
+  const std::string mesh = replace(square_msh(), "16 2 2 1 1 11 13 14", "16 2 2 1 1 11 13 99");
+  const MeshCase c = check_mesh("undefined-node", mesh);
+  const std::string line = std::to_string(line_of(mesh, "16 2 2 1 1"));
+  EXPECT_SAYS(c.o, c.mesh.string() + ":" + line + ": element 16 (line " + line + ") names node 99, which the file does not define");
+}
+
+TEST(MessageClasses, RawBytesFromAMeshFileAreEscaped) {
+  // A physical surface named with bytes that are not UTF-8: the deck's surface 'wall' is not in the
+  // file, and the names it has are shown escaped.
+  const MeshCase c = check_mesh("raw-bytes", replace(square_msh(), "2 1 \"wall\"", "2 1 \"w\xff\x1b[1mall\""));
+  EXPECT_SAYS(c.o, c.deck.string() + ":9:");
+  EXPECT_SAYS(c.o, c.mesh.string() + " has no physical surface 'wall' (it has: w\\xFF\\x1B[1mall)");
+  EXPECT_EQ(c.o.output.find('\x1b'), std::string::npos) << c.o.output;
+  EXPECT_EQ(c.o.output.find('\xff'), std::string::npos) << c.o.output;
+}
+
+TEST(MessageClasses, ThirdOrderElementsAreNamedWithTheMeshingFix) {
+  const std::string mesh = square_msh("17 21 2 1 1 12 15 13 11 11 11 11 11 11 11\n", 1);
+  const MeshCase c = check_mesh("third-order", mesh);
+  const std::string line = std::to_string(line_of(mesh, "17 21 2"));
+  EXPECT_SAYS(c.o, c.mesh.string() + ":" + line + ":");
+  EXPECT_SAYS(c.o, "element 17 (line " + line + ") is a 10-node third-order triangle (type 21)");
+  EXPECT_SAYS(c.o, "mesh with Mesh.ElementOrder = 1, or 2 with triangles only");
+}
