@@ -22,6 +22,7 @@
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "mesh/meridian.hpp"
+#include "model/rigid_motion_check.hpp"
 #include "quantities/history_quantity.hpp"
 
 namespace tunica {
@@ -166,6 +167,31 @@ const ComponentSpec& output_spec() {
 const std::vector<std::string> kTopKeys = {"title", "units", "materials", "parts", "node_sets",
                                            "boundary", "loads", "rigid_surfaces", "contact", "solver",
                                            "steps", "output"};
+
+/// A modulus without a unit is in the deck's pressure unit (N/mm² = MPa for mm and N): `mu: 40`
+/// meant as kPa is a thousand times too stiff. Valid, but said, as for pressure targets.
+void warn_unitless_moduli(const DeckNode& node, const ComponentSpec& spec, Model& m) {
+  for (const ParamSpec& p : spec.params) {
+    if (p.dim != Dimension::pressure || !node.has(p.name)) continue;
+    const DeckNode given = node[p.name];
+    std::vector<DeckNode> values;
+    if (given.is_scalar()) values.push_back(given);
+    else if (given.is_sequence()) values = given.items();
+    for (const DeckNode& v : values) {
+      double written = 0;
+      std::string unit;
+      if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || !unit.empty() || written == 0) continue;
+      const double internal = m.units.to_internal(written, "", Dimension::pressure);
+      m.warnings.push_back(format_location(
+          v.where(), fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa); write the "
+                                 "unit to be sure, e.g. `{} kPa` or `{} MPa`",
+                                 v.as_string(), m.units.display_unit(Dimension::pressure),
+                                 m.units.from_internal(internal, "kPa", Dimension::pressure), v.as_string(),
+                                 v.as_string())));
+      break;  // one warning per key
+    }
+  }
+}
 
 SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSettings base) {
   if (!node.defined()) return base;
@@ -462,6 +488,25 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
             for (int d : b.dofs) ++(d >= m.dofs_per_node() ? slopes : positions);
         const Dimension dim = !is_boundary ? Dimension::pressure : positions == 0 && slopes > 0 ? Dimension::dimensionless
                                                                                                 : Dimension::length;
+        // A pressure given to a boundary: most likely the load was meant, not a displacement.
+        if (is_boundary && !is_load && value.is_scalar()) {
+          double written = 0;
+          std::string unit;
+          if (split_quantity(value.as_string(), written, unit) && !unit.empty()) {
+            bool pressure = true;
+            try {
+              m.units.check_unit(unit, Dimension::pressure);
+            } catch (const std::invalid_argument&) {
+              pressure = false;
+            }
+            if (pressure)
+              value.fail(fmt::format("'{}' is a boundary, whose value is a prescribed {} (in {}), but '{}' is a pressure: "
+                                     "a pressure is set on a load {}",
+                                     target, dim == Dimension::length ? "position change" : "slope",
+                                     dim == Dimension::length ? m.units.display_unit(Dimension::length) : "rad",
+                                     value.as_string(), known_names("", names_of(m.loads), "loads")));
+          }
+        }
         s.targets[target] = read_quantity(value, dim, m.units);
         // A pressure without a unit is in the deck's units (N/mm² = MPa for mm and N): 150 meant as
         // mmHg is a million mmHg. Valid, but said.
@@ -695,13 +740,13 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
       for (const auto& k : keys_of(solid_material_types())) known.push_back(k);
       node["type"].fail("unknown material type '" + type + "' (known: " + list + ")" + did_you_mean(type, known));
     }
-    if (t != material_types().end()) {
-      const Params p = read_params(node, t->second.spec, m.units, names({"type"}));
+    const ComponentSpec& spec = t != material_types().end() ? t->second.spec : st->second.spec;
+    const Params p = read_params(node, spec, m.units, names({"type"}));
+    if (t != material_types().end())
       m.materials[name] = t->second.make(p);
-    } else {
-      const Params p = read_params(node, st->second.spec, m.units, names({"type"}));
+    else
       m.solid_materials[name] = st->second.make(p);
-    }
+    warn_unitless_moduli(node, spec, m);
   }
   read_parts(deck, m, options);
   read_node_sets(deck, m);
@@ -712,6 +757,8 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
   read_steps(deck, m, solver);
   read_output(deck, m);
+  for (const std::string& w : unheld_rigid_motions(m))
+    m.warnings.push_back(format_location(deck.has("boundary") ? deck["boundary"].where() : deck.where(), w));
   m.fingerprint = deck_fingerprint(deck, m);
   return m;
 }

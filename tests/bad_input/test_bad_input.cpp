@@ -204,3 +204,58 @@ TEST(BadInput, APressureWithoutAUnitIsValidButSaid) {
   EXPECT_NE(o.output.find("`150 mmHg`"), std::string::npos) << o.output;
   EXPECT_EQ(run_cli("check " + kExample).output.find("warning"), std::string::npos);
 }
+
+TEST(BadInput, AModulusWithoutAUnitIsValidButSaid) {
+  // `c: 61.163` meant as kPa is 61.163 N/mm², a thousand times too stiff: valid, but said at its
+  // line and key, with the value in kPa and the fix.
+  const std::string deck = write_deck("modulus-no-unit", replace(read_text(kExample), "c: 61.163 kPa", "c: 61.163"));
+  const Outcome o = run_cli("check " + deck);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("modulus-no-unit.yaml:11:8: key 'materials.aorta.c': 61.163 has no unit"), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("= 6.116e+04 kPa"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("`61.163 kPa`"), std::string::npos) << o.output;
+}
+
+TEST(BadInput, APressureGivenToABoundaryNamesTheLoads) {
+  // `stretch` is a displacement boundary: a pressure there means the load was meant.
+  expect_error("pressure-to-boundary", "set: {stretch: 0.6 mm}", "set: {stretch: 150 mmHg}", "steps[0].set.stretch",
+               "'stretch' is a boundary, whose value is a prescribed position change (in mm), but '150 mmHg' is a "
+               "pressure: a pressure is set on a load (the loads are: lumen)");
+}
+
+TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
+  // The 3-D quarter tube with its symmetry planes held is held (a first-order rotation its stress
+  // stops is not named); without them it may translate in x and y and turn about z; a full tube
+  // held in z at its ends and in x on the plane x = 0 may still translate in y (the two lines of
+  // that plane stop the rotation); an axisymmetric tube without a held z slides along the axis.
+  const std::string quarter = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml";
+  EXPECT_EQ(run_cli("check " + quarter).output.find("warning"), std::string::npos);
+  const std::string free3d = write_deck(
+      "rigid-3d", replace(replace(read_text(quarter), "  sym_x:   {node_set: wall.x0, dofs: [x]}      # symmetry plane x = 0\n", ""),
+                          "  sym_y:   {node_set: wall.y0, dofs: [y]}      # symmetry plane y = 0\n", ""));
+  Outcome o = run_cli("check " + free3d);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("rigid-3d.yaml:23:3: key 'boundary': part 'wall': the boundary conditions leave it free to "
+                          "move rigidly (translation along x, translation along y, rotation about z)"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("x of `<part>.x0` and y of `<part>.y0`"), std::string::npos) << o.output;
+  const std::string full = write_deck(
+      "rigid-full", replace(replace(replace(read_text(quarter), "sector: 90 deg, ", ""),
+                                    "  sym_x:   {node_set: wall.x0, dofs: [x]}      # symmetry plane x = 0\n", ""),
+                            "  sym_y:   {node_set: wall.y0, dofs: [y]}      # symmetry plane y = 0\n",
+                            "  hold_x:  {node_set: wall.x0, dofs: [x]}\n"));
+  o = run_cli("check " + full);
+  EXPECT_NE(o.output.find("free to move rigidly (translation along y), so"),
+            std::string::npos)
+      << o.output;
+  const std::string axisym = write_deck(
+      "rigid-axisym", replace(replace(read_text(kExample), "  base:    {node_set: wall.start, dofs: [z]}   # axial position held at z = 0\n", ""),
+                              "  stretch: {node_set: wall.end, dofs: [z]}     # axial displacement of the other end\n",
+                              "  stretch: {node_set: wall.end, dofs: [r]}\n"));
+  o = run_cli("check " + axisym);
+  EXPECT_NE(o.output.find("part 'wall': no boundary condition holds z, so it is free to slide along the axis"),
+            std::string::npos)
+      << o.output;
+}

@@ -1,0 +1,121 @@
+#include "model/rigid_motion_check.hpp"
+
+#include <fmt/format.h>
+
+#include <numeric>
+
+namespace tunica {
+
+namespace {
+
+int find(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+std::vector<std::string> unheld_rigid_motions(const Model& m) {
+  const int parts = static_cast<int>(m.parts.size());
+  // Bodies: parts joined by a shared node.
+  std::vector<int> parent(parts), owner(m.num_nodes(), -1);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int p = 0; p < parts; ++p)
+    for (int n : m.parts[p].nodes) {
+      if (owner[n] >= 0) parent[find(parent, p)] = find(parent, owner[n]);
+      else owner[n] = p;
+    }
+  std::vector<char> in_contact(parts, 0);
+  const auto mark = [&](int node) {
+    if (node >= 0 && node < m.num_nodes() && owner[node] >= 0) in_contact[find(parent, owner[node])] = 1;
+  };
+  for (const ContactPair& c : m.contacts) {
+    for (int n : c.nodes) mark(n);
+    for (int n : c.master) mark(n);
+  }
+  // Held DOFs per node (positions only: slopes are not rigid motions).
+  const int dpn = m.dofs_per_node();
+  std::vector<unsigned> held(m.num_nodes(), 0);
+  for (const Boundary& b : m.boundaries)
+    for (int n : m.node_sets[b.node_set].nodes)
+      for (int d : b.dofs)
+        if (d < dpn) held[n] |= 1u << d;
+
+  std::vector<std::string> out;
+  for (int body = 0; body < parts; ++body) {
+    if (find(parent, body) != body || in_contact[body]) continue;
+    std::vector<int> nodes;
+    std::string names;
+    for (int p = 0; p < parts; ++p)
+      if (find(parent, p) == body) {
+        names += (names.empty() ? "'" : ", '") + m.parts[p].name + "'";
+        for (int n : m.parts[p].nodes)
+          if (owner[n] == p) nodes.push_back(n);
+      }
+    if (nodes.empty()) continue;
+    if (m.geometry == Geometry::axisymmetric) {
+      bool z = false;
+      for (int n : nodes) z = z || (held[n] & 2u);
+      if (!z)
+        out.push_back(fmt::format("{} {}: no boundary condition holds z, so {} free to slide along the axis (a "
+                                  "singular tangent): hold z of at least one node, e.g. of `<part>.start`",
+                                  names.find(',') == std::string::npos ? "part" : "parts", names,
+                                  names.find(',') == std::string::npos ? "it is" : "they are"));
+      continue;
+    }
+    // 3-D: the rigid motions that stay free for finite amplitude (a motion held only to first
+    // order, like the rotation of a quarter tube about the line where its symmetry planes' normals
+    // meet, is held by the stress it meets at second order). A translation along axis k is free
+    // when no node holds k; a rotation about an axis parallel to e_k when every node holding a DOF
+    // other than k lies on one such axis (a node on the axis does not move).
+    double size = 0;
+    for (int n : nodes) size = std::max(size, (m.X[n] - m.X[nodes.front()]).norm());
+    if (!(size > 0)) continue;
+    static const char* axis[3] = {"x", "y", "z"};
+    std::string list;
+    int count = 0;
+    for (int k = 0; k < 3; ++k) {
+      bool held_k = false;
+      for (int n : nodes) held_k = held_k || (held[n] & (1u << k));
+      if (!held_k) {
+        list += fmt::format("{}translation along {}", list.empty() ? "" : ", ", axis[k]);
+        ++count;
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      const auto off_axis = [&](const Eigen::Vector3d& x) {
+        Eigen::Vector3d y = x;
+        y(k) = 0;
+        return y;
+      };
+      bool free = true, any = false;
+      Eigen::Vector3d through = Eigen::Vector3d::Zero();
+      for (int n : nodes) {
+        if (!(held[n] & ~(1u << k) & 7u)) continue;
+        if (!any) {
+          through = off_axis(m.X[n]);
+          any = true;
+        } else if ((off_axis(m.X[n]) - through).norm() > 1e-9 * size) {
+          free = false;
+          break;
+        }
+      }
+      if (!free) continue;
+      list += (list.empty() ? "" : ", ") +
+              (any ? fmt::format("rotation about the line parallel to {} through ({:.4g}, {:.4g}, {:.4g})", axis[k],
+                                 through.x(), through.y(), through.z())
+                   : fmt::format("rotation about {}", axis[k]));
+      ++count;
+    }
+    if (count == 0) continue;
+    out.push_back(fmt::format(
+        "{} {}: the boundary conditions leave {} free to move rigidly ({}), so the tangent is singular and the run "
+        "fails or drifts by an arbitrary rigid motion: hold enough DOFs to stop {}, e.g. for a full tube about z, x "
+        "of `<part>.x0` and y of `<part>.y0` (the nodes on the planes x = 0 and y = 0) besides z at the ends",
+        names.find(',') == std::string::npos ? "part" : "parts", names,
+        names.find(',') == std::string::npos ? "it" : "them", list, count > 1 ? "them" : "it"));
+  }
+  return out;
+}
+
+}  // namespace tunica
