@@ -6,9 +6,10 @@ examples/balloon-angioplasty.yaml with only those values changed, run with the d
 the table gives how far it got, the peak balloon–plaque contact pressure over the inflation
 (the paper: 0.419 N/mm² at 2.05 N/mm²), the lumen at the stenosis centre, the contact force.
 
-    python3 bench/angioplasty-study/study.py build/tunica OUTDIR [--only SUBSTRING] [--jobs 2]
+    python3 bench/angioplasty-study/study.py build/tunica OUTDIR [--only SUBSTRING] [--jobs 2] [--reuse]
 
-Writes OUTDIR/<case>.yaml, OUTDIR/<case>/ (the run) and OUTDIR/study.md (the table).
+Writes OUTDIR/<case>.yaml, OUTDIR/<case>/ (the run), OUTDIR/study.md (the table) and
+OUTDIR/study-peaks.png (the kPa cases' peak contact pressures); --reuse takes the runs already there.
 docs/examples/angioplasty-study.md discusses the result."""
 import argparse, csv, math, os, subprocess, sys, time
 from concurrent.futures import ThreadPoolExecutor
@@ -83,20 +84,24 @@ def deck(unit, outline, balloon, surface):
     return s
 
 
-def run_case(tunica, outdir, name, text):
+def run_case(tunica, outdir, name, text, reuse=False):
     path = os.path.join(outdir, name + ".yaml")
     with open(path, "w", encoding="utf-8") as f:
         f.write(text)
     run_dir = os.path.join(outdir, name)
-    if os.path.isdir(run_dir):
-        for fn in os.listdir(run_dir):
-            os.remove(os.path.join(run_dir, fn)) if os.path.isfile(os.path.join(run_dir, fn)) else None
-    t0 = time.time()
-    p = subprocess.run([tunica, "run", "-q", "-j", "1", path, "-o", run_dir], capture_output=True, text=True)
-    wall = time.time() - t0
-    row = {"case": name, "exit": p.returncode, "wall": wall, "why": ""}
-    if p.returncode != 0:
+    done = os.path.join(run_dir, "study-run.txt")  # exit code, wall time, the run's last message
+    if reuse and os.path.exists(done):
+        code, wall, msg = open(done, encoding="utf-8").read().split("\n", 2)
+        code, wall = int(code), float(wall)
+    else:
+        t0 = time.time()
+        p = subprocess.run([tunica, "run", "-q", "-j", "1", path, "-o", run_dir], capture_output=True, text=True)
+        code, wall = p.returncode, time.time() - t0
         msg = p.stderr.strip().splitlines()[-1] if p.stderr.strip() else ""
+        with open(done, "w", encoding="utf-8") as f:
+            f.write(f"{code}\n{wall}\n{msg}")
+    row = {"case": name, "exit": code, "wall": wall, "why": ""}
+    if code != 0:
         # The run's own diagnosis: a flattened pressure–volume curve (failure_hints.cpp) or the
         # Newton failure of the last attempt.
         if "pressure–volume curve" in msg:
@@ -131,6 +136,7 @@ def main():
     ap.add_argument("outdir")
     ap.add_argument("--only", default="")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--reuse", action="store_true", help="take the runs already in OUTDIR (table and figure only)")
     a = ap.parse_args()
     os.makedirs(a.outdir, exist_ok=True)
     cases = []
@@ -144,7 +150,7 @@ def main():
                     if a.only in name:
                         cases.append((name, (unit, outline, balloon, surface)))
     with ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        futs = [(c, ex.submit(run_case, a.tunica, a.outdir, c[0], deck(*c[1]))) for c in cases]
+        futs = [(c, ex.submit(run_case, a.tunica, a.outdir, c[0], deck(*c[1]), a.reuse)) for c in cases]
         results = []
         for (name, key), fu in futs:
             r = fu.result()
@@ -154,16 +160,17 @@ def main():
                   f"{fmt(r.get('peak'), '.4g')} N/mm², {r['wall']:.1f} s", flush=True)
     lines = ["| plaque G, K unit | outline | balloon b₁ / b₂ (MPa) | contact surface | exit | pressure reached (N/mm²) "
              "| first contact at p (N/mm²) | peak contact pressure (N/mm²) | at p (N/mm²) | lumen at centre (mm) "
-             "| contact force (N) | stopped by | wall s |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| lumen gain (mm) | contact force (N) | stopped by | wall s |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         unit, outline, balloon, surface = r["key"]
         b1, b2 = BALLOONS[balloon]
         lumen = r.get("lumen")
+        gain = lumen - r["lumen0"] if lumen is not None else None
         lines.append(
             f"| {unit} | {outline} | {b1:.4g} / {b2:.4g} ({balloon}) | {surface} | {r['exit']} | "
             f"{fmt(r.get('p_reached'), '.4g')} | {fmt(r.get('touch_p'), '.3g')} | {fmt(r.get('peak'), '.4g')} | "
-            f"{fmt(r.get('peak_at_p'), '.3g')} | {fmt(lumen, '.4f')} | {fmt(r.get('force'), '.4g')} | {r['why'] or '—'} | "
+            f"{fmt(r.get('peak_at_p'), '.3g')} | {fmt(lumen, '.4f')} | {fmt(gain, '.4f')} | {fmt(r.get('force'), '.4g')} | {r['why'] or '—'} | "
             f"{r['wall']:.0f} |")
     reached = [r for r in results if r["exit"] == 0 and r.get("peak") is not None]
     if reached:
@@ -173,6 +180,52 @@ def main():
     with open(os.path.join(a.outdir, "study.md"), "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    plot(results, os.path.join(a.outdir, "study-peaks.png"))
+
+
+def plot(results, path):
+    """Peak contact pressure of every kPa case, grouped by balloon, against the paper's value;
+    an open marker is a run that stopped before 2.05 N/mm² (its peak up to there)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("study.py: matplotlib missing (apt-get install python3-matplotlib): no figure", file=sys.stderr)
+        return
+    kpa = [r for r in results if r["key"][0] == "kPa" and r.get("peak") is not None]
+    if not kpa:
+        return
+    balloons = [b for b in BALLOONS if any(r["key"][2] == b for r in kpa)]
+    styles = {("cosine", "mid"): ("o", "C0"), ("cosine", "outer"): ("s", "C1"),
+              ("circular", "mid"): ("^", "C2"), ("circular", "outer"): ("D", "C3")}
+    fig, ax = plt.subplots(figsize=(7.5, 4.2))
+    for (outline, surface), (marker, colour) in styles.items():
+        xs, ys, done = [], [], []
+        for i, b in enumerate(balloons):
+            for r in kpa:
+                if r["key"][1:] == (outline, b, surface):
+                    xs.append(i + 0.12 * (list(styles).index((outline, surface)) - 1.5))
+                    ys.append(r["peak"])
+                    done.append(r["exit"] == 0)
+        ax.scatter([x for x, d in zip(xs, done) if d], [y for y, d in zip(ys, done) if d], marker=marker,
+                   color=colour, label=f"{outline} outline, contact at the {surface} surface")
+        ax.scatter([x for x, d in zip(xs, done) if not d], [y for y, d in zip(ys, done) if not d],
+                   marker=marker, facecolors="none", edgecolors=colour)
+    ax.axhline(PAPER_PEAK, color="k", lw=0.8, ls="--", label="paper, 0.419 N/mm² at 2.05 N/mm²")
+    labels = []
+    for b in balloons:
+        b1, b2 = BALLOONS[b]
+        labels.append(f"{b}\n{b1:.3g} / {b2:.3g}")
+    ax.set_xticks(range(len(balloons)), labels, fontsize=8)
+    ax.set_xlabel("balloon b₁ / b₂ (MPa)")
+    ax.set_ylabel("peak balloon–plaque contact pressure (N/mm²)")
+    ax.set_title("Plaque G = 500 kPa, K = 724.6 kPa; open markers: stopped before 2.05 N/mm²", fontsize=9)
+    ax.set_ylim(0, 0.5)
+    ax.legend(fontsize=7, loc="lower left")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    print(f"figure: {path}")
 
 
 if __name__ == "__main__":
