@@ -14,9 +14,13 @@ namespace tunica {
 ///    raise `max_iterations`;
 ///  - the step raises a pressure without volume control and the pressure–volume curve of that
 ///    load flattened over the step's converged increments (dp/dV of the last below a fifth of
-///    the first's, or negative): a limit point, which `volume_control` passes.
-/// `converged`: the step's start and each converged increment's state, in order.
+///    the first's, or negative): if the pressure the failed increment tried lies at or beyond
+///    the maximum that the curve's trend predicts (theory manual (7.9); the maximum passed when
+///    dp/dV has changed sign), a limit point, which `volume_control` passes; otherwise the
+///    pressure still rises there, and the hint says so rather than suggest volume control.
+/// `converged`: the step's start and each converged increment's state, in order; `attempted`:
+/// the loads of the failed increment.
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
-                          const std::vector<LoadState>& converged);
+                          const std::vector<LoadState>& converged, const LoadState& attempted);
 
 }  // namespace tunica
