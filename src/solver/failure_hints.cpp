@@ -79,4 +79,34 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   return hints;
 }
 
+std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step) {
+  std::string hints;
+  const Model& m = system.model();
+  for (std::size_t c = 0; c < m.contacts.size(); ++c) {
+    const ContactPair& pair = m.contacts[c];
+    if (!pair.deformable()) continue;
+    const std::vector<ContactNodeState> states = system.contact_states(u, static_cast<int>(c), step);
+    double span = 0;
+    int gaps = 0, active = 0;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      if (!states[k].point.active || states[k].master_segment < 0) continue;
+      ++active;
+      if (k + 1 < states.size() && states[k + 1].point.active && states[k + 1].master_segment >= 0) {
+        span += std::abs((states[k + 1].master_segment + states[k + 1].point.xi) -
+                         (states[k].master_segment + states[k].point.xi));
+        ++gaps;
+      }
+    }
+    if (gaps < 2 || span / gaps < kCoarseSlaveSpacing) continue;
+    hints += fmt::format(
+        " Hint: in contact pair '{}' the {} active slave nodes lie on average {:.1f} master segments apart (the "
+        "slave is the coarser mesh where they touch): each slave node pushes the master at one point, and the "
+        "master's nodes between them are held by nothing but its own stiffness, which can leave Newton without a "
+        "basin at any increment size. Refine the slave's mesh, or add the reverse pass, a second pair with "
+        "`slave: {}` and `master:` the slave (theory manual §9.1).",
+        pair.name, active, span / gaps, pair.master_name);
+  }
+  return hints;
+}
+
 }  // namespace tunica

@@ -23,4 +23,17 @@ namespace tunica {
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
                           const std::vector<LoadState>& converged, const LoadState& attempted);
 
+/// The slave nodes of a deformable contact pair that are active at u, next to each other on the
+/// slave chain, lie this many master segments apart on average (or more): the slave is the
+/// coarser mesh in contact.
+constexpr double kCoarseSlaveSpacing = 1.5;
+
+/// Empty, or a hint per deformable contact pair of step `step` (0-based) whose neighbouring
+/// active slave nodes lie on average at least kCoarseSlaveSpacing master segments apart at u (the
+/// distance along the master as segment index + ξ of their feet; pairs with fewer than 3 active
+/// nodes in a row are skipped): node-to-surface contact then loads the master at points only, and
+/// the master's nodes between them are held by nothing but the master's own stiffness (theory
+/// manual §9.1, one pass). It names the remedies: a finer slave mesh, or the reverse pass.
+std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step);
+
 }  // namespace tunica

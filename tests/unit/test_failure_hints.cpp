@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "io/deck.hpp"
 #include "solver/failure_hints.hpp"
 
 using namespace tunica;
@@ -113,4 +114,63 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   const std::string past =
       failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
   EXPECT_NE(past.find("likely at a maximum"), std::string::npos) << past;
+}
+
+namespace {
+
+/// A neo-Hookean tube (slave, `balloon` elements) pressed 0.001 mm into a Fung tube (master,
+/// `artery` elements) beyond the offset, both 1 mm long.
+std::string pressed_tubes(int balloon, int artery) {
+  return fmt::format(R"(title: a tube pressed into a tube
+units: {{length: mm, force: N}}
+materials:
+  soft: {{type: neo_hookean, mu: 0.1 MPa}}
+  wall: {{type: fung, c: 0.2 MPa, a1: 1.0, a2: 1.0, a4: 0.1}}
+parts:
+  balloon:
+    element: axisymmetric_membrane
+    material: soft
+    thickness: 0.1 mm
+    mesh: {{type: line, from: [1, 0], to: [1, 1], elements: {}}}
+  artery:
+    element: axisymmetric_membrane
+    material: wall
+    thickness: 0.1 mm
+    mesh: {{type: line, from: [1.2, 0], to: [1.2, 1], elements: {}}}
+boundary:
+  a0: {{node_set: artery.start, dofs: [r, z]}}
+  a1: {{node_set: artery.end, dofs: [r, z]}}
+loads:
+  lumen: {{type: pressure, part: balloon}}
+contact:
+  press: {{slave: balloon, master: artery, master_orientation: reversed, penalty: 1e3 N/mm^3, offset: 0.1 mm}}
+steps:
+  - {{name: press, increments: 1, set: {{lumen: 0.01 MPa}}}}
+output:
+  vtk: false
+)",
+                     balloon, artery);
+}
+
+/// The hint for the tubes with the slave's nodes moved out by 0.101 mm (all in contact).
+std::string hint_for_pressed(int balloon, int artery) {
+  const Model m = read_deck_text(pressed_tubes(balloon, artery), "tubes.yaml");
+  const System system(m);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(m.num_dofs());
+  for (int n : m.parts[static_cast<std::size_t>(m.find_part("balloon"))].nodes) u(m.dofs_per_node() * n) = 0.101;
+  return contact_resolution_hints(system, u, 0);
+}
+
+}  // namespace
+
+TEST(FailureHints, ASlaveCoarserThanItsMasterInContactIsNamed) {
+  // 4 slave elements on 16 master segments: neighbouring slave nodes 4 segments apart.
+  const std::string h = hint_for_pressed(4, 16);
+  EXPECT_NE(h.find("in contact pair 'press' the 5 active slave nodes lie on average 4.0 master segments apart"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("`slave: artery`"), std::string::npos) << h;
+  // Matching meshes, or a finer slave: nothing to say.
+  EXPECT_EQ(hint_for_pressed(8, 8), "");
+  EXPECT_EQ(hint_for_pressed(16, 4), "");
 }
