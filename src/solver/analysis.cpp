@@ -130,7 +130,8 @@ void Analysis::run_step(AnalysisObserver& observer) {
             "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
             "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
             info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
-            failure_hints(model_, step, r, converged)));
+            failure_hints(model_, step, r, converged, trial) +
+                contact_resolution_hints(system_, state_.u, s)));
       }
       observer.on_cutback(info, why);
       ++cutbacks;

@@ -3,11 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 namespace tunica {
 
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
-                          const std::vector<LoadState>& converged) {
+                          const std::vector<LoadState>& converged, const LoadState& attempted) {
   std::string hints;
   const auto add = [&](const std::string& h) { hints += " Hint: " + h; };
   if (last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3)
@@ -16,6 +17,8 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
                     last.last_relative_residual, step.solver.max_iterations));
   // A pressure the step raises, under pressure control, whose p–V curve flattens: theory manual §7.1.
   if (step.volume_control.load < 0 && converged.size() >= 3) {
+    const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
+    const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
     for (std::size_t l = 0; l < model.loads.size(); ++l) {
       const auto target = step.targets.find(model.loads[l].name);
       const LoadState& a = converged.front();
@@ -24,19 +27,84 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
         const double dV = y.volume[l] - x.volume[l];
         return dV != 0 ? (y.pressure[l] - x.pressure[l]) / dV : 0.0;
       };
+      const std::size_t n = converged.size();
+      const LoadState& end = converged.back();
       const double first = slope(converged[0], converged[1]);
-      const double now = slope(converged[converged.size() - 2], converged.back());
-      if (first != 0 && now / first < 0.2)
+      const double now = slope(converged[n - 2], end);
+      if (first == 0 || now / first >= 0.2) continue;
+      // Where the curve's trend puts its maximum (7.9): dp/dV linear in V through the slopes of
+      // the last two increments, p* = p + ∫ dp/dV dV up to its zero. None in sight (±∞) while
+      // dp/dV does not fall; reached when dp/dV has changed sign or its zero lies behind.
+      const double sense = target->second > a.pressure[l] ? 1.0 : -1.0;  // the pressure rises or falls
+      double peak = sense * std::numeric_limits<double>::infinity();
+      if (now / first <= 0) {
+        peak = end.pressure[l];
+      } else if (n >= 4) {
+        const double before = slope(converged[n - 3], converged[n - 2]);
+        const double v_now = 0.5 * (converged[n - 2].volume[l] + end.volume[l]);
+        const double v_before = 0.5 * (converged[n - 3].volume[l] + converged[n - 2].volume[l]);
+        const double bend = v_now != v_before ? (now - before) / (v_now - v_before) : 0.0;  // d²p/dV²
+        if (bend * now < 0 && std::abs(now - before) > 1e-9 * std::abs(before)) {  // falling beyond round-off
+          const double v_peak = v_now - now / bend;
+          const double ahead = v_peak - end.volume[l];  // the volume still to go, along the way V moves
+          const double moving = end.volume[l] - converged[n - 2].volume[l];
+          peak = ahead * moving <= 0 ? end.pressure[l]
+                                     : end.pressure[l] + 0.5 * (now + bend * (end.volume[l] - v_now)) * ahead;
+        }
+      }
+      const double tried = attempted.pressure.size() > l ? attempted.pressure[l] : end.pressure[l];
+      const bool beyond = sense * tried >= sense * peak;
+      if (beyond) {
         add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
                         "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at a "
                         "maximum (a limit point), beyond which no state carries a higher pressure. A step with "
-                        "`volume_control: {{load: {}, volume: <enclosed volume>}}` passes it, controlling the enclosed volume "
-                        "instead (user guide §3.1, volume control).",
-                        model.loads[l].name, 100 * now / first,
-                        model.units.from_internal(converged.back().pressure[l], "kPa", Dimension::pressure),
-                        model.units.from_internal(converged.back().pressure[l], "mmHg", Dimension::pressure),
+                        "`volume_control: {{load: {}, volume: <enclosed volume>}}` passes it, controlling the enclosed "
+                        "volume instead (user guide §3.1, volume control).",
+                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]),
                         model.loads[l].name));
+      } else {
+        const std::string trend =
+            std::isfinite(peak) ? fmt::format("its trend puts a maximum near {:.4g} kPa, above the {:.4g} kPa the failed "
+                                              "increment tried", kpa(peak), kpa(tried))
+                                : "its trend shows no maximum";
+        add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
+                        "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. "
+                        "The failure is likely not a limit point of the pressure but a local one, which "
+                        "`volume_control` need not pass: look at newton.csv (active_changes) and the last frame "
+                        "where the residual sits, e.g. at contact (user guide §6).",
+                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend));
+      }
     }
+  }
+  return hints;
+}
+
+std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step) {
+  std::string hints;
+  const Model& m = system.model();
+  for (std::size_t c = 0; c < m.contacts.size(); ++c) {
+    const ContactPair& pair = m.contacts[c];
+    if (!pair.deformable()) continue;
+    const std::vector<ContactNodeState> states = system.contact_states(u, static_cast<int>(c), step);
+    double span = 0;
+    int gaps = 0, active = 0;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      if (!states[k].point.active || states[k].master_segment < 0) continue;
+      ++active;
+      if (k + 1 < states.size() && states[k + 1].point.active && states[k + 1].master_segment >= 0) {
+        span += std::abs((states[k + 1].master_segment + states[k + 1].point.xi) -
+                         (states[k].master_segment + states[k].point.xi));
+        ++gaps;
+      }
+    }
+    if (gaps < 2 || span / gaps < kCoarseSlaveSpacing) continue;
+    hints += fmt::format(
+        " Hint: in contact pair '{}' the {} active slave nodes lie on average {:.1f} master segments apart (the "
+        "slave is the coarser mesh where they touch): each slave node pushes the master at one point, and the "
+        "master's nodes between them are held by nothing but its own stiffness, which can leave Newton without a "
+        "basin at any increment size. Refine the slave's mesh, or add the reverse pass, a second pair with "
+        "`slave: {}` and `master:` the slave (theory manual §9.1).",
+        pair.name, active, span / gaps, pair.master_name);
   }
   return hints;
 }

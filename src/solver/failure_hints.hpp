@@ -14,9 +14,26 @@ namespace tunica {
 ///    raise `max_iterations`;
 ///  - the step raises a pressure without volume control and the pressure–volume curve of that
 ///    load flattened over the step's converged increments (dp/dV of the last below a fifth of
-///    the first's, or negative): a limit point, which `volume_control` passes.
-/// `converged`: the step's start and each converged increment's state, in order.
+///    the first's, or negative): if the pressure the failed increment tried lies at or beyond
+///    the maximum that the curve's trend predicts (theory manual (7.9); the maximum passed when
+///    dp/dV has changed sign), a limit point, which `volume_control` passes; otherwise the
+///    pressure still rises there, and the hint says so rather than suggest volume control.
+/// `converged`: the step's start and each converged increment's state, in order; `attempted`:
+/// the loads of the failed increment.
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
-                          const std::vector<LoadState>& converged);
+                          const std::vector<LoadState>& converged, const LoadState& attempted);
+
+/// The slave nodes of a deformable contact pair that are active at u, next to each other on the
+/// slave chain, lie this many master segments apart on average (or more): the slave is the
+/// coarser mesh in contact.
+constexpr double kCoarseSlaveSpacing = 1.5;
+
+/// Empty, or a hint per deformable contact pair of step `step` (0-based) whose neighbouring
+/// active slave nodes lie on average at least kCoarseSlaveSpacing master segments apart at u (the
+/// distance along the master as segment index + ξ of their feet; pairs with fewer than 3 active
+/// nodes in a row are skipped): node-to-surface contact then loads the master at points only, and
+/// the master's nodes between them are held by nothing but the master's own stiffness (theory
+/// manual §9.1, one pass). It names the remedies: a finer slave mesh, or the reverse pass.
+std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step);
 
 }  // namespace tunica

@@ -1,8 +1,14 @@
 // The hints a stopped run's message gives (solver/failure_hints.hpp): raise max_iterations when
 // Newton was still converging; volume_control when the pressure–volume curve has flattened
-// (a limit point); nothing otherwise.
+// to a maximum at the pressure the failed increment tried (a limit point); that the pressure
+// still rises when the curve has flattened short of its maximum; nothing otherwise.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include <string>
+
+#include "io/deck.hpp"
 #include "solver/failure_hints.hpp"
 
 using namespace tunica;
@@ -36,6 +42,13 @@ std::vector<LoadState> along(const std::vector<std::pair<double, double>>& pv) {
   return out;
 }
 
+/// The loads of a failed increment that tried pressure p.
+LoadState trying(double p) {
+  LoadState s;
+  s.pressure = {p};
+  return s;
+}
+
 NewtonResult failed(const std::string& why, double relative) {
   NewtonResult r;
   r.failure = why;
@@ -48,27 +61,116 @@ NewtonResult failed(const std::string& why, double relative) {
 TEST(FailureHints, StillConvergingAtTheLimitSuggestsMoreIterations) {
   const Model m = one_load_model();
   const auto linear = along({{0, 1}, {1, 2}, {2, 3}});
-  const std::string h = failure_hints(m, raising(10), failed("no convergence in 12 iterations", 9e-7), linear);
+  const std::string h = failure_hints(m, raising(10), failed("no convergence in 12 iterations", 9e-7), linear, trying(2.5));
   EXPECT_NE(h.find("raise `max_iterations` in `solver` (now 12)"), std::string::npos) << h;
   EXPECT_EQ(h.find("volume_control"), std::string::npos) << h;
   // Far from converged, or another failure: no such hint.
-  EXPECT_EQ(failure_hints(m, raising(10), failed("no convergence in 12 iterations", 0.3), linear), "");
-  EXPECT_EQ(failure_hints(m, raising(10), failed("diverging", 1e-6), linear), "");
+  EXPECT_EQ(failure_hints(m, raising(10), failed("no convergence in 12 iterations", 0.3), linear, trying(2.5)), "");
+  EXPECT_EQ(failure_hints(m, raising(10), failed("diverging", 1e-6), linear, trying(2.5)), "");
 }
 
 TEST(FailureHints, AFlatteningPressureVolumeCurveNamesVolumeControl) {
   const Model m = one_load_model();
   // dp/dV: 1 at the start, 0.1 at the end of the converged increments.
   const auto flattening = along({{0, 0}, {1, 1}, {1.5, 2}, {1.6, 3}});
-  const std::string h = failure_hints(m, raising(3), failed("diverging", 1), flattening);
+  const std::string h = failure_hints(m, raising(3), failed("diverging", 1), flattening, trying(1.7));
   EXPECT_NE(h.find("load 'blood' has flattened"), std::string::npos) << h;
   EXPECT_NE(h.find("dp/dV down to 10 %"), std::string::npos) << h;
   EXPECT_NE(h.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << h;
   // Not flattening, not raising this load, already under volume control, too few increments: none.
-  EXPECT_EQ(failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {2, 1.8}, {3, 2.6}})), "");
-  EXPECT_EQ(failure_hints(m, raising(0), failed("diverging", 1), flattening), "");
+  EXPECT_EQ(failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {2, 1.8}, {3, 2.6}}), trying(2.7)), "");
+  EXPECT_EQ(failure_hints(m, raising(0), failed("diverging", 1), flattening, trying(1.7)), "");
   Step controlled = raising(3);
   controlled.volume_control.load = 0;
-  EXPECT_EQ(failure_hints(m, controlled, failed("diverging", 1), flattening), "");
-  EXPECT_EQ(failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}})), "");
+  EXPECT_EQ(failure_hints(m, controlled, failed("diverging", 1), flattening, trying(1.7)), "");
+  EXPECT_EQ(failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}}), trying(1.1)), "");
+}
+
+TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
+  const Model m = one_load_model();
+  // dp/dV: 1 at the start, then 0.1, 0.08, 0.06 per unit volume: flattened to 6 %, but falling
+  // by 0.02 per unit volume, its trend reaches 0 at V = 6.5, a maximum near p = 1.3025.
+  const auto slowing = along({{0, 0}, {1, 1}, {1.1, 2}, {1.18, 3}, {1.24, 4}});
+  const std::string h = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.25));
+  EXPECT_NE(h.find("load 'blood' has flattened"), std::string::npos) << h;
+  EXPECT_NE(h.find("dp/dV down to 6 %"), std::string::npos) << h;
+  EXPECT_NE(h.find("but the pressure still rises"), std::string::npos) << h;
+  const auto kpa = [&](double p) { return m.units.from_internal(p, "kPa", Dimension::pressure); };
+  const std::size_t near = h.find("its trend puts a maximum near ");
+  ASSERT_NE(near, std::string::npos) << h;
+  EXPECT_NEAR(std::stod(h.substr(near + 30)), kpa(1.3025), 1e-3 * kpa(1.3025)) << h;
+  EXPECT_NE(h.find(fmt::format("kPa, above the {:.4g} kPa the failed increment tried", kpa(1.25))), std::string::npos) << h;
+  EXPECT_EQ(h.find("likely at a maximum"), std::string::npos) << h;
+  EXPECT_EQ(h.find("volume_control: {load"), std::string::npos) << h;
+  // Trying beyond the predicted maximum: the limit point and volume control.
+  const std::string beyond = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.31));
+  EXPECT_NE(beyond.find("likely at a maximum"), std::string::npos) << beyond;
+  EXPECT_NE(beyond.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << beyond;
+  // A flattened curve whose dp/dV no longer falls: no maximum in sight.
+  const std::string steady =
+      failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.2, 3}}), trying(1.25));
+  EXPECT_NE(steady.find("its trend shows no maximum"), std::string::npos) << steady;
+  // Past the maximum (dp/dV negative): the limit point whatever was tried.
+  const std::string past =
+      failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
+  EXPECT_NE(past.find("likely at a maximum"), std::string::npos) << past;
+}
+
+namespace {
+
+/// A neo-Hookean tube (slave, `balloon` elements) pressed 0.001 mm into a Fung tube (master,
+/// `artery` elements) beyond the offset, both 1 mm long.
+std::string pressed_tubes(int balloon, int artery) {
+  return fmt::format(R"(title: a tube pressed into a tube
+units: {{length: mm, force: N}}
+materials:
+  soft: {{type: neo_hookean, mu: 0.1 MPa}}
+  wall: {{type: fung, c: 0.2 MPa, a1: 1.0, a2: 1.0, a4: 0.1}}
+parts:
+  balloon:
+    element: axisymmetric_membrane
+    material: soft
+    thickness: 0.1 mm
+    mesh: {{type: line, from: [1, 0], to: [1, 1], elements: {}}}
+  artery:
+    element: axisymmetric_membrane
+    material: wall
+    thickness: 0.1 mm
+    mesh: {{type: line, from: [1.2, 0], to: [1.2, 1], elements: {}}}
+boundary:
+  a0: {{node_set: artery.start, dofs: [r, z]}}
+  a1: {{node_set: artery.end, dofs: [r, z]}}
+loads:
+  lumen: {{type: pressure, part: balloon}}
+contact:
+  press: {{slave: balloon, master: artery, master_orientation: reversed, penalty: 1e3 N/mm^3, offset: 0.1 mm}}
+steps:
+  - {{name: press, increments: 1, set: {{lumen: 0.01 MPa}}}}
+output:
+  vtk: false
+)",
+                     balloon, artery);
+}
+
+/// The hint for the tubes with the slave's nodes moved out by 0.101 mm (all in contact).
+std::string hint_for_pressed(int balloon, int artery) {
+  const Model m = read_deck_text(pressed_tubes(balloon, artery), "tubes.yaml");
+  const System system(m);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(m.num_dofs());
+  for (int n : m.parts[static_cast<std::size_t>(m.find_part("balloon"))].nodes) u(m.dofs_per_node() * n) = 0.101;
+  return contact_resolution_hints(system, u, 0);
+}
+
+}  // namespace
+
+TEST(FailureHints, ASlaveCoarserThanItsMasterInContactIsNamed) {
+  // 4 slave elements on 16 master segments: neighbouring slave nodes 4 segments apart.
+  const std::string h = hint_for_pressed(4, 16);
+  EXPECT_NE(h.find("in contact pair 'press' the 5 active slave nodes lie on average 4.0 master segments apart"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("`slave: artery`"), std::string::npos) << h;
+  // Matching meshes, or a finer slave: nothing to say.
+  EXPECT_EQ(hint_for_pressed(8, 8), "");
+  EXPECT_EQ(hint_for_pressed(16, 4), "");
 }
