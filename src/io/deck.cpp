@@ -22,6 +22,7 @@
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "mesh/meridian.hpp"
+#include "model/frame_axis_check.hpp"
 #include "model/rigid_motion_check.hpp"
 #include "quantities/history_quantity.hpp"
 
@@ -759,6 +760,8 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   read_output(deck, m);
   for (const std::string& w : unheld_rigid_motions(m))
     m.warnings.push_back(format_location(deck.has("boundary") ? deck["boundary"].where() : deck.where(), w));
+  for (const std::string& w : frame_axis_warnings(m))
+    m.warnings.push_back(format_location(deck.has("parts") ? deck["parts"].where() : deck.where(), w));
   m.fingerprint = deck_fingerprint(deck, m);
   return m;
 }

@@ -259,3 +259,25 @@ TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
             std::string::npos)
       << o.output;
 }
+
+TEST(BadInput, ACylindricalFrameThatDoesNotFitItsSurfaceIsWarnedAbout) {
+  // The 3-D quarter tube runs along z: its frame's axis given as x, or its point far off the
+  // tube's axis, gives valid but unmeant fibre directions; the warning names the part, the
+  // fraction of its area and the axis its normals are perpendicular to.
+  const std::string quarter = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml";
+  const std::string frame = "frame: {type: cylindrical, axis: [0, 0, 1]}";
+  const std::string along_x =
+      write_deck("frame-axis", replace(read_text(quarter), frame, "frame: {type: cylindrical, axis: [1, 0, 0]}"));
+  Outcome o = run_cli("check " + along_x);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("frame-axis.yaml:15:3: key 'parts': part 'wall': its cylindrical frame (axis [1, 0, 0] "
+                          "through (0, 0, 0)) does not fit the surface over"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("most nearly perpendicular to [0, 0, 1] (a tube's axis)"), std::string::npos) << o.output;
+  const std::string off_axis = write_deck(
+      "frame-point", replace(read_text(quarter), frame, "frame: {type: cylindrical, axis: [0, 0, 1], point: [3 mm, 0 mm, 0 mm]}"));
+  o = run_cli("check " + off_axis);
+  EXPECT_NE(o.output.find("its cylindrical frame (axis [0, 0, 1] through (3, 0, 0)) does not fit"), std::string::npos)
+      << o.output;
+}
