@@ -145,11 +145,19 @@ std::string missing_file_message(const std::string& written, const std::string& 
 }  // namespace
 
 void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCache& cache) {
-  const DeckNode frame = node["frame"];
-  part.frame = read_frame(frame, m, part);
   const DeckNode mesh = node.required("mesh");
   if (!mesh.is_map()) mesh.fail("expected a map with `type: tube`, `sphere`, `octant` or `gmsh`");
   const std::string type = mesh.required("type").as_string();
+  // The mesh type first: a meridian mesh (`line`, `arc`) on a 3-D part is the likelier mistake
+  // than a missing frame.
+  if (type != "gmsh" && !surface_generator_types().count(type))
+    mesh["type"].fail("unknown mesh type '" + type + "' for a membrane part (known: gmsh, octant, sphere, tube)" +
+                      did_you_mean(type, {"gmsh", "octant", "sphere", "tube"}) +
+                      (type == "line" || type == "arc"
+                           ? "; `" + type + "` meshes a meridian: for an axisymmetric part write `element: axisymmetric_membrane`"
+                           : ""));
+  const DeckNode frame = node["frame"];
+  part.frame = read_frame(frame, m, part);
 
   if (type == "gmsh") {
     const Params mp = read_params(mesh, gmsh_mesh_spec(), m.units, {"type"});

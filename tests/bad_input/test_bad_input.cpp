@@ -281,3 +281,12 @@ TEST(BadInput, ACylindricalFrameThatDoesNotFitItsSurfaceIsWarnedAbout) {
   EXPECT_NE(o.output.find("its cylindrical frame (axis [0, 0, 1] through (3, 0, 0)) does not fit"), std::string::npos)
       << o.output;
 }
+
+TEST(BadInput, AMeridianMeshOnA3DPartNamesTheAxisymmetricElement) {
+  // `element: membrane` with the axisymmetric example's `line` mesh: the mesh type is the
+  // mistake, not the missing frame its anisotropic material would also need.
+  expect_error("meridian-on-3d", "    element: axisymmetric_membrane\n", "    element: membrane\n", "parts.wall.mesh.type",
+               "unknown mesh type 'line' for a membrane part (known: gmsh, octant, sphere, tube); `line` meshes a "
+               "meridian: for an axisymmetric part write `element: axisymmetric_membrane`",
+               "    mesh: {type: line,");
+}
