@@ -13,6 +13,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/bounded_file.hpp"
 #include "io/deck_contact.hpp"
@@ -681,6 +682,38 @@ std::pair<int, int> indenting_tab(const std::string& text, int last_line) {
   return {0, 0};
 }
 
+/// (line, column) of the innermost `bracket` (`{` or `[`) still open at the start of line `last_line`
+/// (1-based), outside quotes and comments, or (0, 0). yaml-cpp reports an unclosed flow collection
+/// where it gave up, often lines later.
+std::pair<int, int> open_flow_bracket(const std::string& text, int last_line, char bracket) {
+  std::vector<std::tuple<char, int, int>> open;
+  int line = 1, column = 0;
+  char quote = 0;
+  bool comment = false;
+  for (std::size_t i = 0; i < text.size() && line < last_line; ++i) {
+    const char c = text[i];
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+      comment = false;
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t' || text[i - 1] == '\n')) comment = true;
+    else if (c == '"' || c == '\'') quote = c;
+    else if (c == '{' || c == '[') open.emplace_back(c, line, column);
+    else if ((c == '}' || c == ']') && !open.empty()) open.pop_back();
+  }
+  for (auto it = open.rbegin(); it != open.rend(); ++it)
+    if (std::get<0>(*it) == bracket) return {std::get<1>(*it), std::get<2>(*it)};
+  return {0, 0};
+}
+
 }  // namespace
 
 std::vector<ComponentSpec> deck_sections() {
@@ -702,7 +735,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
       throw InputError({file, tab.first, tab.second, ""},
                        "a tab indents this line, and YAML allows only spaces for indentation: replace the tab with "
                        "spaces (YAML syntax error: " + e.msg + ")");
-    throw InputError({file, line, e.mark.is_null() ? 0 : e.mark.column + 1, ""}, "YAML syntax error: " + e.msg);
+    std::string where_opened;
+    if (e.msg.find("flow not found") != std::string::npos) {
+      const bool map = e.msg.find("map") != std::string::npos;
+      if (const auto open = open_flow_bracket(text, line > 0 ? line + 1 : INT_MAX, map ? '{' : '['); open.first > 0)
+        where_opened = fmt::format(" (the `{}` opened on line {}, column {} is not closed: add the `{}` there)",
+                                   map ? '{' : '[', open.first, open.second, map ? '}' : ']');
+    }
+    throw InputError({file, line, e.mark.is_null() ? 0 : e.mark.column + 1, ""}, "YAML syntax error: " + e.msg + where_opened);
   }
   const DeckNode deck(root, file, "", {file, 1, 1, ""});
   if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");

@@ -43,8 +43,15 @@ TEST(BadInput, TheExampleItselfIsValid) {
 }
 
 TEST(BadInput, YamlSyntaxError) {
-  // yaml-cpp reports where it noticed the unclosed list: the next line.
+  // yaml-cpp reports where it noticed the unclosed list: the next line; the message adds where it
+  // was opened.
   expect_error("syntax", "a2: 0.60558", "a2: [0.60558", "", "YAML syntax error", "    a4: 0.1067");
+  const std::string text = replace(read_text(kExample), "a2: 0.60558", "a2: [0.60558");
+  const Outcome o = expect_check_error(kScratch, "syntax-where", text, "    a4: 0.1067", "",
+                                       "is not closed: add the `]` there");
+  EXPECT_NE(o.output.find("the `[` opened on line " + std::to_string(line_of(text, "a2: [0.60558")) + ", column 9"),
+            std::string::npos)
+      << o.output;
 }
 
 TEST(BadInput, UnknownKey) {
