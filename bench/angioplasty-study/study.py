@@ -11,7 +11,7 @@ the table gives how far it got, the peak balloon–plaque contact pressure over 
 Writes OUTDIR/<case>.yaml, OUTDIR/<case>/ (the run), OUTDIR/study.md (the table) and
 OUTDIR/study-peaks.png (the kPa cases' peak contact pressures); --reuse takes the runs already there.
 docs/examples/angioplasty-study.md discusses the result."""
-import argparse, csv, math, os, subprocess, sys, time
+import argparse, csv, math, os, re, subprocess, sys, time
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -102,10 +102,16 @@ def run_case(tunica, outdir, name, text, reuse=False):
             f.write(f"{code}\n{wall}\n{msg}")
     row = {"case": name, "exit": code, "wall": wall, "why": ""}
     if code != 0:
-        # The run's own diagnosis: a flattened pressure–volume curve (failure_hints.cpp) or the
-        # Newton failure of the last attempt.
-        if "pressure–volume curve" in msg:
-            row["why"] = "pressure plateau (limit point)"
+        # The run's own diagnosis (solver/failure_hints.cpp): a pressure maximum, a one-pass
+        # contact whose slave nodes lie far apart on the master, or the last attempt's failure.
+        spacing = re.search(r"lie on average ([0-9.]+) master segments apart", msg)
+        if "likely at a maximum" in msg:
+            row["why"] = "pressure maximum (limit point)"
+        elif spacing:
+            row["why"] = f"contact: slave nodes {spacing.group(1)} master segments apart" + \
+                         (" (p still rising)" if "still rises" in msg else "")
+        elif "still rises" in msg:
+            row["why"] = "p still rising; a local failure"
         else:
             head = msg.split("): ", 1)[-1]
             row["why"] = head.split(";")[0][:80]
