@@ -91,8 +91,7 @@ void print_warnings(const tunica::System& system) {
   for (const std::string& w : system.model().warnings)
     std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
   for (const std::string& w : tunica::pressure_load_warnings(system))
-    std::fprintf(stderr, "tunica: warning: %s: %s\n", for_terminal(system.model().deck_file).c_str(),
-                 for_terminal(w).c_str());
+    std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
 }
 
 int run(const std::string& deck, std::string out, const std::string& restart, bool quiet,

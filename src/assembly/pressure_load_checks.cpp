@@ -170,19 +170,19 @@ std::vector<std::string> pressure_load_warnings(const System& system) {
     const double tiny = 1e-9 * size * size * size;
     for (const UnheldEdges& c : unheld_open_edges(m, load.part)) {
       const long tag = c.node < static_cast<int>(m.node_tags.size()) && m.node_tags[c.node] ? m.node_tags[c.node] : c.node + 1;
-      out.push_back(fmt::format(
+      out.push_back(format_location(load.where, fmt::format(
           "load '{}': part '{}' has a free edge of {} element edge(s) around ({:.4g}, {:.4g}, {:.4g}) (through node {}) "
           "that no boundary condition holds: a hole or a gap in the mesh? The pressure pushes such an edge out "
           "unresisted by anything but the membrane; close the surface, or hold the edge in `boundary`.",
-          load.name, part.name, c.edges, c.centre(0), c.centre(1), c.centre(2), tag));
+          load.name, part.name, c.edges, c.centre(0), c.centre(1), c.centre(2), tag)));
     }
     if (V < -tiny)
-      out.push_back(fmt::format(
+      out.push_back(format_location(load.where, fmt::format(
           "load '{}' pushes its surface (part '{}') inward: the volume on the side its pressure pushes away from is "
           "{:.6g} {} at the reference state, negative, so the normals point into the volume the surface encloses. "
           "A pressure inside a vessel or balloon pushes outward: set `flip: true` on the load (or reverse the "
           "elements' node order in the mesh); a pressure from outside is meant this way.",
-          load.name, part.name, V, unit));
+          load.name, part.name, V, unit)));
     // The enclosed volume matters where it is reported or controlled.
     bool measured = false;
     for (const HistoryRequest& h : m.output.history) measured |= h.quantity == "volume" && h.load == l;
@@ -191,13 +191,13 @@ std::vector<std::string> pressure_load_warnings(const System& system) {
       int open = 0;
       const double cap = std::abs(missing_cap_volume(m, load.part, load.volume.point, &open));
       if (open > 0 && cap > 1e-3 * std::max(std::abs(V), tiny))
-        out.push_back(fmt::format(
+        out.push_back(format_location(load.where, fmt::format(
             "load '{}': the surface of part '{}' has {} open edge(s) that no plane through the volume point p₀ "
             "closes, so its enclosed volume ({:.6g} {}, measured about p₀) misses the caps that would close it "
             "(about {:.6g} {}): history's `volume` and a volume control would not be the lumen's. For a tube, give the load `volume_axis` "
             "(its axis; the ends are then closed by planes normal to it); for a surface cut by symmetry planes, "
             "put `volume_point` on them.",
-            load.name, part.name, open, V, unit, cap, unit));
+            load.name, part.name, open, V, unit, cap, unit)));
     }
   }
   return out;

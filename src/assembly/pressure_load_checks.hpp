@@ -25,8 +25,8 @@ struct UnheldEdges {
 };
 std::vector<UnheldEdges> unheld_open_edges(const Model& m, int part);
 
-/// One message per suspicious load, each naming the load, what was measured (in the deck's
-/// length unit) and the key that fixes it.
+/// One message per suspicious load, each at the load's place in the deck (file:line:column: key),
+/// naming the load, what was measured (in the deck's length unit) and the key that fixes it.
 std::vector<std::string> pressure_load_warnings(const System& system);
 
 /// The volume of the caps that would close the open edges of a surface, measured as the load

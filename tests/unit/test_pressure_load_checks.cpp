@@ -72,7 +72,11 @@ TEST(PressureLoadChecks, TunicaCheckPrintsTheWarningAndStillAcceptsTheDeck) {
       quarter_tube("lumen: {type: pressure, part: wall, flip: true, volume_axis: [0, 0, 1]}"));
   const Outcome o = run_cli("check " + deck);
   EXPECT_EQ(o.exit_code, 0) << o.output;
-  EXPECT_NE(o.output.find("inward.yaml: load 'lumen' pushes its surface"), std::string::npos) << o.output;
+  // At the load's line in the deck, with its key.
+  EXPECT_NE(o.output.find("inward.yaml:" + std::to_string(line_of(read_text(deck), "  lumen: {type: pressure")) +
+                          ":10: key 'loads.lumen': load 'lumen' pushes its surface"),
+            std::string::npos)
+      << o.output;
 }
 
 TEST(PressureLoadChecks, AHoleInAWallIsAnUnheldChainOfOpenEdges) {
