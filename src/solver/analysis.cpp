@@ -86,7 +86,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
     // an attempt it fails is retried once at the same size with the plain tangent before any
     // cut-back, so that the default is never worse than `stress_free_start: exact`.
     SolverSettings settings = step.solver;
-    const bool stiffened_start = settings.stiffen_stress_free_start && vc.load < 0 && (state_.u.array() == 0.0).all();
+    const bool stiffened_start = settings.stiffen_stress_free_start && (state_.u.array() == 0.0).all();
     IncrementInfo info;
     info.step = s + 1;
     info.step_name = step.name;
