@@ -1,6 +1,6 @@
 #pragma once
 // The stiffened first correction from a stress-free state under volume control (theory manual
-// §7.2, (7.9)): the bordered system (7.5) solved with K + K₀(p̂), K₀ the normal-tension stiffness
+// §7.2, (7.10)): the bordered system (7.5) solved with K + K₀(p̂), K₀ the normal-tension stiffness
 // (7.7) of the Laplace tension (7.8) of the pressure p̂ — the pressure the correction itself
 // finds. At rest the pressure is 0 and K alone is the stiffness of the unstressed flat facets:
 // a tube's (a surface's without double curvature) non-uniform normal modes are nearly free, the
