@@ -75,9 +75,10 @@ const ComponentSpec& solver_settings_spec() {
                       d.tangent_predictor ? "tangent" : "none"),
          with_default(one_of(text("stress_free_start",
                                   "first correction of an increment that starts at the stress-free reference state "
-                                  "under pressure: stiffened = its tangent gets the normal-tension stiffness of the "
-                                  "Laplace estimate T0 = |p|/|H| on every pressurized 3-D membrane element (the Newton "
-                                  "direction changes, not the solution); exact = the plain tangent"),
+                                  "under pressure or volume control: stiffened = its tangent gets the normal-tension "
+                                  "stiffness of the Laplace estimate T0 = |p|/|H| on every pressurized 3-D membrane "
+                                  "element, p under volume control the pressure the stiffened correction finds (the "
+                                  "Newton direction changes, not the solution); exact = the plain tangent"),
                              {"stiffened", "exact"}),
                       d.stiffen_stress_free_start ? "stiffened" : "exact"),
          with_default(one_of(text("pressure_stiffness",

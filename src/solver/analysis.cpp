@@ -82,11 +82,12 @@ void Analysis::run_step(AnalysisObserver& observer) {
   double dt = state_.dt > 0 ? state_.dt : nominal;
   while (t < 1.0) {
     if (t + dt > 1.0 - 1e-9 * nominal) dt = 1.0 - t;
-    // From the stress-free state the stiffened first correction is the default, (7.6)–(7.8);
+    // From the stress-free state the stiffened first correction is the default, (7.6)–(7.8) and,
+    // under volume control, (7.10);
     // an attempt it fails is retried once at the same size with the plain tangent before any
     // cut-back, so that the default is never worse than `stress_free_start: exact`.
     SolverSettings settings = step.solver;
-    const bool stiffened_start = settings.stiffen_stress_free_start && vc.load < 0 && (state_.u.array() == 0.0).all();
+    const bool stiffened_start = settings.stiffen_stress_free_start && (state_.u.array() == 0.0).all();
     IncrementInfo info;
     info.step = s + 1;
     info.step_name = step.name;

@@ -69,8 +69,10 @@ bool BorderedProblem::side_conditions_hold(double tolerance) const {
   return std::abs(c_) <= tolerance * std::abs(target_);
 }
 
-const SparseMatrix& BorderedProblem::jacobian(int iteration) {
-  fill_bordered(inner_.jacobian(iteration), g_, dV_, A_);
+const SparseMatrix& BorderedProblem::jacobian(int iteration) { return bordered(inner_.jacobian(iteration)); }
+
+const SparseMatrix& BorderedProblem::bordered(const SparseMatrix& K) {
+  fill_bordered(K, g_, dV_, A_);
   return A_;
 }
 

@@ -22,6 +22,9 @@ public:
   /// |V − target| ≤ tolerance |target|.
   bool side_conditions_hold(double tolerance) const override;
   const SparseMatrix& jacobian(int iteration) override;
+  /// The bordered matrix of the last evaluation with K in place of the equilibrium tangent (K of
+  /// the pattern of System::pattern; the stress-free start's K + K₀, solver/volume_start.hpp).
+  const SparseMatrix& bordered(const SparseMatrix& K);
   void step(const Eigen::VectorXd& dx, double factor) override;
   void describe(IterationRecord& rec) override { inner_.describe(rec); }
   double max_correction() const override { return inner_.max_correction(); }
@@ -31,6 +34,11 @@ public:
   bool allows_perturbation() const override { return false; }
   /// R₀ is about 0 at the start of an increment (only the target moved).
   bool yardstick_after_first_correction() const override { return true; }
+
+  MechanicalProblem& inner() { return inner_; }
+  /// The index of the load whose pressure is the unknown, and that pressure now.
+  int load() const { return load_; }
+  double pressure() const { return loads_.pressure[load_]; }
 
 private:
   MechanicalProblem& inner_;

@@ -11,7 +11,11 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
                           const std::vector<LoadState>& converged, const LoadState& attempted) {
   std::string hints;
   const auto add = [&](const std::string& h) { hints += " Hint: " + h; };
-  if (last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3)
+  // Still converging: the relative residual small, and the absolute one falling and small against
+  // the forces that cancel in it. A relative residual is no evidence alone: measured against an
+  // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.
+  if (last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3 &&
+      last.residual_falling && last.last_residual <= 1e-3 * last.last_force_scale)
     add(fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
                     "raise `max_iterations` in `solver` (now {}).",
                     last.last_relative_residual, step.solver.max_iterations));

@@ -10,8 +10,9 @@
 namespace tunica {
 
 /// Empty, or one or more sentences, each naming the deck key that would help:
-///  - Newton was still converging at `max_iterations` (last relative residual below 1e-3):
-///    raise `max_iterations`;
+///  - Newton was still converging at `max_iterations` (last relative residual below 1e-3, and the
+///    absolute residual ‖R‖ falling over the last two iterations and below 1e-3 of the forces
+///    that cancel in it): raise `max_iterations`;
 ///  - the step raises a pressure without volume control and the pressure–volume curve of that
 ///    load flattened over the step's converged increments (dp/dV of the last below a fifth of
 ///    the first's, or negative): if the pressure the failed increment tried lies at or beyond

@@ -5,6 +5,7 @@
 
 #include "solver/bordered_problem.hpp"
 #include "solver/tangent_predictor.hpp"
+#include "solver/volume_start.hpp"
 
 namespace tunica {
 
@@ -13,12 +14,14 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
                              const std::function<void(const IterationRecord&)>& on_iteration,
                              const VolumeConstraint* constraint, const Eigen::VectorXd* converged) {
   MechanicalProblem equilibrium(system, loads, u);
-  if (constraint) {
-    BorderedProblem bordered(equilibrium, loads, constraint->load, constraint->target);
-    return newton(bordered, solver, settings, on_iteration);
-  }
   // The increment starts at the stress-free reference state.
   const bool stress_free = converged && converged->size() > 0 && (converged->array() == 0.0).all();
+  if (constraint) {
+    BorderedProblem bordered(equilibrium, loads, constraint->load, constraint->target);
+    std::optional<VolumeStartStiffness> start;
+    if (settings.stiffen_stress_free_start && stress_free) start.emplace(bordered, *converged, settings);
+    return newton(bordered, solver, settings, on_iteration, start ? &*start : nullptr);
+  }
   const StartStiffness* stiffness = nullptr;
   if (settings.stiffen_stress_free_start && stress_free) {
     auto hook = std::make_unique<StartStiffness>(system, loads);

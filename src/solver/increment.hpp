@@ -20,7 +20,9 @@ struct VolumeConstraint {
 /// Solves the increment from u (prescribed DOFs already set, theory manual (7.1)) under `loads`.
 /// `converged`: the last converged state u_n (differs from u on prescribed DOFs only), or nullptr.
 ///  - Volume constraint: loads.pressure[constraint->load] is a further unknown, (7.5); no
-///    predictor, stiffened start or symmetrization (the bordered matrix is solved as it is).
+///    predictor or symmetrization (the bordered matrix is solved as it is); from u_n = 0 with
+///    settings.stiffen_stress_free_start, the first correction is stiffened with the pressure it
+///    finds, (7.10) (solver/volume_start.hpp).
 ///  - settings.tangent_predictor and `converged`: the first correction is linearized at u_n, (7.3).
 ///  - settings.stiffen_stress_free_start and u_n = 0: the first correction (the predictor's, or
 ///    iteration 0's) is computed with K + K₀, (7.6)–(7.8). R₀, the residual and the later tangents

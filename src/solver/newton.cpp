@@ -69,6 +69,10 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
     rec.energy = energy;
     rec.relative_energy = e1 > 0 ? energy / e1 : 0.0;
     result.last_relative_residual = rec.relative_residual;
+    result.last_residual = rec.residual;
+    result.last_force_scale = scale;
+    result.residual_falling = residuals.size() >= 2 && rec.residual < residuals.back() &&
+                              residuals.back() < residuals[residuals.size() - 2];
     result.iterations = k;
     if (!std::isfinite(rec.residual)) {
       on_iteration(rec);

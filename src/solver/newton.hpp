@@ -38,6 +38,9 @@ struct NewtonResult {
   int iterations = 0;
   std::string failure;  ///< why it did not converge
   double last_relative_residual = 0;
+  double last_residual = 0;     ///< ‖R‖ of the last iterate (force units)
+  double last_force_scale = 0;  ///< the forces that cancel in that R (NonlinearProblem::evaluate)
+  bool residual_falling = false;  ///< ‖R‖ fell in each of the last two iterations
   int perturbed = 0;  ///< iterations whose singular tangent was solved with a perturbed diagonal
 };
 

@@ -49,10 +49,14 @@ LoadState trying(double p) {
   return s;
 }
 
+/// A failed attempt whose absolute residual fell to `relative` of R₀ = the force scale 1.
 NewtonResult failed(const std::string& why, double relative) {
   NewtonResult r;
   r.failure = why;
   r.last_relative_residual = relative;
+  r.last_residual = relative;
+  r.last_force_scale = 1;
+  r.residual_falling = true;
   return r;
 }
 
@@ -67,6 +71,22 @@ TEST(FailureHints, StillConvergingAtTheLimitSuggestsMoreIterations) {
   // Far from converged, or another failure: no such hint.
   EXPECT_EQ(failure_hints(m, raising(10), failed("no convergence in 12 iterations", 0.3), linear, trying(2.5)), "");
   EXPECT_EQ(failure_hints(m, raising(10), failed("diverging", 1e-6), linear, trying(2.5)), "");
+}
+
+TEST(FailureHints, ATinyRelativeResidualOfADivergedAttemptDoesNotSuggestMoreIterations) {
+  // What a volume-controlled tube from rest did before its stiffened start (user guide §6): the
+  // first correction flung the wall out, R₀ = 6e14 N, and 40 iterations later ‖R‖ = 0.02 N is
+  // 3.4e-17 of R₀ but not small against the 0.5 N of forces that cancel in it.
+  const Model m = one_load_model();
+  const auto linear = along({{0, 1}, {1, 2}, {2, 3}});
+  NewtonResult blown = failed("no convergence in 40 iterations", 3.4e-17);
+  blown.last_residual = 0.02;
+  blown.last_force_scale = 0.5;
+  EXPECT_EQ(failure_hints(m, raising(10), blown, linear, trying(2.5)).find("max_iterations"), std::string::npos);
+  // Small against the forces but no longer falling: not converging either.
+  NewtonResult flat = failed("no convergence in 12 iterations", 9e-7);
+  flat.residual_falling = false;
+  EXPECT_EQ(failure_hints(m, raising(10), flat, linear, trying(2.5)).find("max_iterations"), std::string::npos);
 }
 
 TEST(FailureHints, AFlatteningPressureVolumeCurveNamesVolumeControl) {
