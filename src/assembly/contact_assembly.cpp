@@ -223,9 +223,30 @@ std::vector<ContactNodeState> ContactAssembly::states(const Eigen::VectorXd& u, 
       s.point = rigid_contact(model_.rigid_surfaces[pair.rigid], xs, pair.areas[k], pair.law, f, nullptr);
     }
     s.force = s.point.pressure * pair.areas[k];
-    const double a = current(pair.area_index[k]);
-    s.pressure = a > 0 ? s.force / a : s.point.pressure;
     out.push_back(s);
+  }
+  if (pair.reverse >= 0) {
+    // Two-pass pair (theory manual §9.1, (9.9)): the reverse pass's slave nodes push on the pair's
+    // slave chain, its master; the normal component f_j·n of the force on master node j of its
+    // element (f_j = ε A g_N ∂g_N/∂x_j = p_c A w_j n, the shape function w_j of the closest point)
+    // is added to that node's normal force.
+    const ContactPair& rev = model_.contacts[pair.reverse];
+    const Eigen::Matrix2Xd chain = current_chain(rev.master, u);
+    const bool flipped = rev.master.front() != pair.nodes.front();  // rev.master: pair.nodes, maybe reversed
+    const int last = static_cast<int>(pair.nodes.size()) - 1;
+    for (std::size_t k = 0; k < rev.nodes.size(); ++k) {
+      const int n = rev.nodes[k];
+      const Eigen::Vector2d xs = model_.X[n].head<2>() + u.segment<2>(2 * n);
+      DeformableContactElement e;
+      if (!deformable_element(rev, xs, chain, rev.areas[k], false, e)) continue;
+      for (int j = 0; j < 4; ++j)
+        if (e.master[j] >= 0)
+          out[flipped ? last - e.master[j] : e.master[j]].force += e.f.segment<2>(2 + 2 * j).dot(e.point.normal);
+    }
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const double a = current(pair.area_index[k]);
+    out[k].pressure = a > 0 ? out[k].force / a : out[k].point.pressure;
   }
   return out;
 }

@@ -38,7 +38,9 @@ namespace tunica {
 struct ContactNodeState {
   int node = -1;
   ContactPoint point;    ///< gap, ε⟨−g_N⟩ (per reference area), normal, ...
-  double force = 0;      ///< normal force ε⟨−g_N⟩ A_s on the node (whole circumference)
+  /// Normal force ε⟨−g_N⟩ A_s on the node (whole circumference); a two-pass pair's adds the reverse
+  /// pass's normal force on the node as its master (theory manual §9.1, (9.9)).
+  double force = 0;
   double pressure = 0;   ///< contact pressure on the current tributary area: force / a_s
   int master_segment = -1;  ///< deformable pairs: the segment k of the contact element (slave, P_k, P_{k+1}), else −1
 };
@@ -67,7 +69,9 @@ public:
 
   /// Contact state of every slave node of pair `c` at u, in the pair's node order.
   /// Every slave node of pair c at u in step `step` (0-based); a pair waiting for a part to enter
-  /// reports its nodes inactive, as the assembly treats it.
+  /// reports its nodes inactive, as the assembly treats it. A two-pass pair (ContactPair::reverse)
+  /// reports the whole contact on its slave's nodes: `point` is its own pass's, `force` and
+  /// `pressure` both passes'.
   std::vector<ContactNodeState> states(const Eigen::VectorXd& u, int c, int step) const;
 
 private:

@@ -637,9 +637,15 @@ void read_output(const DeckNode& deck, Model& m) {
       r.load = static_cast<int>(it - m.loads.begin());
     } else if (q->target == QuantityTarget::contact) {
       const std::string& c = h.text("contact");
-      auto it = std::find_if(m.contacts.begin(), m.contacts.end(), [&](auto& x) { return x.name == c; });
-      if (it == m.contacts.end())
-        h.fail("contact", "undefined contact pair '" + c + "' " + known_names(c, names_of(m.contacts), "contact pairs"));
+      // A pair's reverse pass (`passes: 2`) shares its name and is reported with it.
+      auto it = std::find_if(m.contacts.begin(), m.contacts.end(),
+                             [&](auto& x) { return x.name == c && !x.is_reverse_pass(); });
+      if (it == m.contacts.end()) {
+        std::vector<std::string> pairs;
+        for (const auto& x : m.contacts)
+          if (!x.is_reverse_pass()) pairs.push_back(x.name);
+        h.fail("contact", "undefined contact pair '" + c + "' " + known_names(c, pairs, "contact pairs"));
+      }
       r.contact = static_cast<int>(it - m.contacts.begin());
     }
     r.reduce = q->reduce;

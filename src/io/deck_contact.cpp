@@ -47,10 +47,10 @@ const ComponentSpec& contact_spec() {
       "(signed distance to the surface) − offset; it is active when g_N < 0. A deformable master's normal is "
       "its direction of travel turned clockwise (a chain running towards +z faces +r): the slave must be on "
       "that side, or give `master_orientation: reversed` (a slave node behind the master at the reference state is an error). Slave nodes push on the master surface at "
-      "their closest point (one pass: master nodes may enter the slave): by default the C¹ curve through the master's "
+      "their closest point (one pass: master nodes may enter the slave; `passes: 2` adds the reverse pass): by default the C¹ curve through the master's "
       "nodes (`master_surface: smooth`), or its straight segments (`faceted`). The contact pressure "
       "ε⟨−g_N⟩ is per reference area; the outputs `contact_pressure` divide the normal force ε⟨−g_N⟩ A_s by "
-      "the current tributary area.",
+      "the current tributary area (`passes: 2`: both passes' normal force on the slave's nodes).",
       {required(text("slave", "name of an axisymmetric membrane part, or of a node set")),
        text("rigid", "name of a surface in `rigid_surfaces` (or give `master`)"),
        text("master", "name of an axisymmetric membrane part or of a node set: the deformable master chain "
@@ -69,6 +69,15 @@ const ComponentSpec& contact_spec() {
                     "smooth"),
        required(positive(number("penalty", Dimension::penalty,
                                 "penalty ε: contact pressure per unit penetration (the penetration is p_c/ε)"))),
+       with_default(at_most(at_least(integer("passes",
+                                             "deformable pairs: 1, one-pass (the slave's nodes push on the master); 2, "
+                                             "two-pass: also the master's nodes push on the slave (the reverse pass, "
+                                             "formed internally), each pass with half the penalty, for a slave that "
+                                             "becomes the coarser mesh in contact; the outputs report the whole "
+                                             "contact on the slave's nodes"),
+                                     1),
+                            2),
+                    "1"),
        with_default(at_least(number("offset", Dimension::length,
                                     "c: contact starts at the distance c from the surface (e.g. half a thickness; "
                                     "two membranes: the sum of their half thicknesses)"),
@@ -200,10 +209,74 @@ std::vector<int> read_chain(const Params& p, const std::string& key, const Model
   return chain;
 }
 
+/// The first index of `nodes` (global numbers) to lie behind `chain` at the reference
+/// state (signed distance < 0 to its nearest feature; contact_search.hpp), with that distance; −1 if none.
+std::pair<int, double> first_behind(const Model& m, const std::vector<int>& nodes, const std::vector<int>& chain) {
+  const Eigen::Matrix2Xd master = reference_chain(m, chain);
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const ChainProjection w = project_on_chain(m.X[nodes[k]].head<2>(), master,
+                                               std::numeric_limits<double>::infinity(), kMasterEndTolerance);
+    if (w.feature != ChainFeature::none && w.signed_distance < 0) return {static_cast<int>(k), w.signed_distance};
+  }
+  return {-1, 0.0};
+}
+
+/// Tributary areas of a slave chain on the chain itself, in its order.
+void set_chain_areas(ContactPair& c, const Model& m) {
+  c.area_chain = c.nodes;
+  const Eigen::VectorXd areas = slave_tributary_areas(reference_chain(m, c.nodes));
+  for (std::size_t i = 0; i < c.nodes.size(); ++i) {
+    c.areas.push_back(areas(static_cast<Eigen::Index>(i)));
+    c.area_index.push_back(static_cast<int>(i));
+  }
+}
+
+/// The reverse pass of the deformable pair `c` (`passes: 2`; theory manual §9.1, (9.9)): the
+/// master's chain becomes the slave, with its own tributary areas, and the slave's chain the
+/// master, ordered so that its normal faces the former master — the opposite of the master's normal
+/// where the slave's nodes project on it at the reference state. Each pass gets half the penalty.
+ContactPair reverse_pass(const Params& p, ContactPair& c, int master_part, const Model& m) {
+  ContactPair r;
+  r.name = c.name;
+  r.where = c.where;
+  r.part = master_part;
+  r.nodes = c.master;
+  r.master = c.nodes;
+  r.master_name = p.text("slave");
+  r.master_surface = c.master_surface;
+  c.law.penalty *= 0.5;
+  r.law = c.law;
+  set_chain_areas(r, m);
+  // Orientation: Σ over the slave's nodes that face a master feature of n_slave·n_master (the
+  // slave chain's normal in its order, (t_z, −t_r) with t the chord of its neighbours) < 0 keeps it.
+  const Eigen::Matrix2Xd master = reference_chain(m, c.master), slave = reference_chain(m, c.nodes);
+  const Eigen::Index ns = slave.cols();
+  double facing = 0;
+  for (Eigen::Index k = 0; k < ns; ++k) {
+    const ChainProjection w = project_on_chain(slave.col(k), master, std::numeric_limits<double>::infinity(),
+                                               kMasterEndTolerance);
+    if (w.feature == ChainFeature::none) continue;
+    const Eigen::Vector2d nm = segment_normal(master.col(w.segment), master.col(w.segment + 1));
+    const Eigen::Vector2d t = slave.col(std::min(k + 1, ns - 1)) - slave.col(std::max<Eigen::Index>(k - 1, 0));
+    facing += Eigen::Vector2d(t(1), -t(0)).normalized().dot(nm);
+  }
+  if (facing == 0)
+    p.fail("passes", "`passes: 2`: no node of the slave '" + p.text("slave") + "' faces the master '" + c.master_name +
+                         "' at the reference state, so the side of the reverse pass (the master's nodes against the "
+                         "slave) cannot be told; use `passes: 1`");
+  if (facing > 0) std::reverse(r.master.begin(), r.master.end());
+  if (const auto [k, s] = first_behind(m, r.nodes, r.master); k >= 0)
+    p.fail("passes", fmt::format("`passes: 2`: master node {} of '{}' lies behind the slave '{}' (signed distance {:g} "
+                                 "at the reference state), so the reverse pass would push it through the slave: "
+                                 "name as master only the nodes that face the slave, or use `passes: 1`",
+                                 k, c.master_name, p.text("slave"), s));
+  return r;
+}
+
 /// The slave and master of a deformable pair.
-void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c, const Model& m) {
+void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c, const Model& m, int* master_part) {
   c.nodes = read_chain(p, "slave", m, &c.part);
-  c.master = read_chain(p, "master", m, nullptr);
+  c.master = read_chain(p, "master", m, master_part);
   c.master_name = p.text("master");
   if (p.text("slave") == c.master_name)
     p.fail("master", "the master is the slave '" + c.master_name + "' (self-contact is not supported)");
@@ -218,24 +291,13 @@ void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c,
   // The side: at the reference state no slave node may lie behind the master (signed distance
   // s < 0 to the nearest feature): it would count as penetrated by s − c from the first iteration
   // and be pushed through the master. Almost always the orientation is the wrong way round.
-  const Eigen::Matrix2Xd master = reference_chain(m, c.master);
-  for (std::size_t k = 0; k < c.nodes.size(); ++k) {
-    const ChainProjection w = project_on_chain(m.X[c.nodes[k]].head<2>(), master,
-                                               std::numeric_limits<double>::infinity(), kMasterEndTolerance);
-    if (w.feature != ChainFeature::none && w.signed_distance < 0)
-      p.fail(node.has("master_orientation") ? "master_orientation" : "master",
-             fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} at the reference "
-                         "state; the normal is the master's direction turned clockwise): reverse "
-                         "`master_orientation`, or name only the slave nodes that face the master",
-                         k, p.text("slave"), c.master_name, w.signed_distance));
-  }
-  // Tributary areas on the slave chain itself, in its order.
-  c.area_chain = c.nodes;
-  const Eigen::VectorXd areas = slave_tributary_areas(reference_chain(m, c.nodes));
-  for (std::size_t i = 0; i < c.nodes.size(); ++i) {
-    c.areas.push_back(areas(static_cast<Eigen::Index>(i)));
-    c.area_index.push_back(static_cast<int>(i));
-  }
+  if (const auto [k, s] = first_behind(m, c.nodes, c.master); k >= 0)
+    p.fail(node.has("master_orientation") ? "master_orientation" : "master",
+           fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} at the reference "
+                       "state; the normal is the master's direction turned clockwise): reverse "
+                       "`master_orientation`, or name only the slave nodes that face the master",
+                       k, p.text("slave"), c.master_name, s));
+  set_chain_areas(c, m);
 }
 
 }  // namespace
@@ -265,6 +327,9 @@ void read_contacts(const DeckNode& deck, Model& m) {
         p.fail("master_surface", "only a deformable `master` has a surface choice (a rigid polyline is its segments)");
       if (node.has("master_orientation"))
         p.fail("master_orientation", "only a deformable `master` has an orientation (a rigid polyline's is its point order)");
+      if (p.integer("passes") != 1)
+        p.fail("passes", "a rigid pair has one pass: a rigid surface has no nodes to push back on the slave (`passes: 2` "
+                         "needs a deformable `master`)");
       const std::string& r = p.text("rigid");
       auto it = std::find_if(m.rigid_surfaces.begin(), m.rigid_surfaces.end(), [&](auto& x) { return x.name == r; });
       if (it == m.rigid_surfaces.end())
@@ -272,9 +337,18 @@ void read_contacts(const DeckNode& deck, Model& m) {
       c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
       read_rigid_slave(p, c, m);
     } else {
-      read_deformable_pair(node, p, c, m);
+      int master_part = -1;
+      read_deformable_pair(node, p, c, m, &master_part);
       c.master_surface = p.text("master_surface") == "faceted" ? ContactPair::MasterSurface::faceted
                                                                 : ContactPair::MasterSurface::smooth;
+      if (p.integer("passes") == 2) {
+        ContactPair r = reverse_pass(p, c, master_part, m);
+        c.reverse = static_cast<int>(m.contacts.size()) + 1;
+        r.reverse_of = static_cast<int>(m.contacts.size());
+        m.contacts.push_back(std::move(c));
+        m.contacts.push_back(std::move(r));
+        continue;
+      }
     }
     m.contacts.push_back(std::move(c));
   }

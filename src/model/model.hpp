@@ -184,7 +184,15 @@ struct ContactPair {
   enum class MasterSurface { faceted, smooth } master_surface = MasterSurface::smooth;
   ContactLaw law;
   SourceLocation where;
+  /// Two-pass contact of a deformable pair (`passes: 2`, theory manual §9.1, (9.10)): each pass has
+  /// half the pair's penalty, and the reverse pass (slave and master swapped) follows the pair in
+  /// Model::contacts as an ordinary pair. `reverse`: that entry's index, else −1.
+  int reverse = -1;
+  /// This entry is the reverse pass of pair `reverse_of` (made by the deck reader, never named in a
+  /// deck or an output: its forces are reported with that pair's), else −1.
+  int reverse_of = -1;
   bool deformable() const { return rigid < 0; }
+  bool is_reverse_pass() const { return reverse_of >= 0; }
 };
 
 /// Volume control of a step: the pressure of `load` becomes an unknown and the

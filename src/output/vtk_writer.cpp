@@ -276,6 +276,7 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
 
 /// Axisymmetric point fields: the contact pressure (normal force over the current tributary
 /// area, summed over the pairs a node belongs to; 0 off contact) when the model has contact pairs.
+/// A two-pass pair's is on its slave's nodes, both passes' forces (theory manual §9.1, (9.9)).
 std::vector<CellField> contact_point_fields(const Analysis& a) {
   const Model& m = a.model();
   if (m.contacts.empty()) return {};
@@ -283,8 +284,10 @@ std::vector<CellField> contact_point_fields(const Analysis& a) {
   f.name = "contact_pressure" + unit_suffix(m.units, Dimension::pressure);
   f.components = 1;
   f.values.assign(m.num_nodes(), 0.0);
-  for (std::size_t c = 0; c < m.contacts.size(); ++c)
+  for (std::size_t c = 0; c < m.contacts.size(); ++c) {
+    if (m.contacts[c].is_reverse_pass()) continue;  // reported on its pair's slave nodes (contact_states)
     for (const auto& s : a.system().contact_states(a.displacement(), static_cast<int>(c), a.loads().step)) f.values[s.node] += s.pressure;
+  }
   return {f};
 }
 

@@ -196,14 +196,15 @@ std::vector<Q> make_table() {
                          "reduce: sum)"));
   t.push_back(contact("contact_pressure", Dimension::pressure, Reduce::max,
                       "contact pressure at the slave nodes of a contact pair: normal force ε⟨−g_N⟩ A_s over the current "
-                      "tributary area (default reduce: max)",
+                      "tributary area; `passes: 2`, both passes' normal force on the node (default reduce: max)",
                       [](const ContactNodeState& c) { return c.pressure; }));
   t.push_back(contact("contact_force", Dimension::force, Reduce::sum,
-                      "normal contact force ε⟨−g_N⟩ A_s of the slave nodes, whole circumference (default reduce: sum, "
-                      "the total)",
+                      "normal contact force ε⟨−g_N⟩ A_s of the slave nodes, whole circumference; `passes: 2`, plus the "
+                      "reverse pass's force on them (default reduce: sum, the total of both passes)",
                       [](const ContactNodeState& c) { return c.force; }));
   t.push_back(contact("contact_penetration", Dimension::length, Reduce::max,
-                      "penetration ⟨−g_N⟩ of the slave nodes (0 off contact; g_N = distance − offset; default reduce: max)",
+                      "penetration ⟨−g_N⟩ of the slave nodes into the master (0 off contact; g_N = distance − offset; "
+                      "`passes: 2`: of the first pass; default reduce: max)",
                       [](const ContactNodeState& c) { return std::max(-c.point.gap, 0.0); }));
   return t;
 }

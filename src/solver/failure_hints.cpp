@@ -88,7 +88,7 @@ std::string contact_resolution_hints(const System& system, const Eigen::VectorXd
   const Model& m = system.model();
   for (std::size_t c = 0; c < m.contacts.size(); ++c) {
     const ContactPair& pair = m.contacts[c];
-    if (!pair.deformable()) continue;
+    if (!pair.deformable() || pair.reverse >= 0 || pair.is_reverse_pass()) continue;  // two-pass: both sides push
     const std::vector<ContactNodeState> states = system.contact_states(u, static_cast<int>(c), step);
     double span = 0;
     int gaps = 0, active = 0;
@@ -106,8 +106,8 @@ std::string contact_resolution_hints(const System& system, const Eigen::VectorXd
         " Hint: in contact pair '{}' the {} active slave nodes lie on average {:.1f} master segments apart (the "
         "slave is the coarser mesh where they touch): each slave node pushes the master at one point, and the "
         "master's nodes between them are held by nothing but its own stiffness, which can leave Newton without a "
-        "basin at any increment size. Refine the slave's mesh, or add the reverse pass, a second pair with "
-        "`slave: {}` and `master:` the slave (theory manual §9.1).",
+        "basin at any increment size. Refine the slave's mesh, or give the pair `passes: 2`, so that the "
+        "nodes of '{}' push back on the slave too (two-pass contact, theory manual §9.1).",
         pair.name, active, span / gaps, pair.master_name);
   }
   return hints;

@@ -144,3 +144,13 @@ TEST(BadDeformableContact, SlaveBehindTheMaster) {
   expect_error("behind-default", "master: artery, master_orientation: reversed,", "master: artery,", "contact.press.master",
                "reverse `master_orientation`");
 }
+
+TEST(BadDeformableContact, TwoPassesOnARigidPair) {
+  expect_error("rigid-two-passes", "rigid: sleeve,", "rigid: sleeve, passes: 2,", "contact.cage.passes",
+               "a rigid pair has one pass: a rigid surface has no nodes to push back on the slave");
+}
+
+TEST(BadDeformableContact, ThreePasses) {
+  expect_error("three-passes", "master_orientation: reversed,", "master_orientation: reversed, passes: 3,",
+               "contact.press.passes", "passes");
+}
