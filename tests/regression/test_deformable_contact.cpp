@@ -19,6 +19,7 @@
 #include <numbers>
 
 #include "../support/capture.hpp"
+#include "../support/contact_tubes.hpp"
 #include "../support/system_fd.hpp"
 
 using namespace tunica;
@@ -26,46 +27,6 @@ using namespace tunica::test;
 
 namespace {
 
-const std::string kTubes = R"(title: neo-Hookean tube inflated against a Fung tube
-units: {length: mm, force: N}
-materials:
-  soft: {type: neo_hookean, mu: 0.1 MPa}
-  wall: {type: fung, c: 0.2 MPa, a1: 1.0, a2: 1.0, a4: 0.1}
-parts:
-  balloon:
-    element: axisymmetric_membrane
-    material: soft
-    thickness: 0.1 mm
-    mesh: {type: line, from: [1, 0], to: [1, 1], elements: 8}
-  artery:
-    element: axisymmetric_membrane
-    material: wall
-    thickness: 0.1 mm
-    mesh: {type: line, from: [1.2, 0], to: [1.2, 1], elements: 8}
-boundary:
-  b0: {node_set: balloon.start, dofs: [z]}
-  b1: {node_set: balloon.end, dofs: [z]}
-  a0: {node_set: artery.start, dofs: [z]}
-  a1: {node_set: artery.end, dofs: [z]}
-loads:
-  lumen: {type: pressure, part: balloon}
-contact:
-  press: {slave: balloon, master: artery, master_orientation: reversed, penalty: PENALTY, offset: 0.1 mm}
-solver: {residual_tolerance: 1e-11}
-steps:
-  - {name: free, increments: 3, set: {lumen: 0.003}}
-  - {name: contact, increments: 12, set: {lumen: 0.009}}
-output:
-  vtk: false
-  history:
-    - {quantity: pressure, load: lumen}
-    - {quantity: radius, part: balloon, name: ri}
-    - {quantity: radius, part: artery, name: ro}
-    - {quantity: contact_pressure, contact: press, name: pc_max}
-    - {quantity: contact_pressure, contact: press, name: pc_min, reduce: min}
-    - {quantity: contact_force, contact: press}
-    - {quantity: contact_penetration, contact: press}
-)";
 
 // The closed form (see the header comment).
 constexpr double kMu = 0.1, kHi = 0.1, kRi = 1.0, kC = 0.2, kA1 = 1.0, kHo = 0.1, kRo = 1.2, kOffset = 0.1;
@@ -143,7 +104,7 @@ output:
 
 TEST(DeformableContactDeck, ConcentricTubesMatchTheClosedForm) {
   const double eps = 1e3;  // N/mm³: penetration q r/(ε R) ≈ 4e-6 mm
-  const Model m = read_deck_text(replace(kTubes, "PENALTY", "1e3"), "tubes.yaml");
+  const Model m = read_deck_text(contact_tubes_deck("1e3"), "tubes.yaml");
   ASSERT_EQ(m.contacts.size(), 1u);
   ASSERT_TRUE(m.contacts[0].deformable());
   Capture cap;
@@ -199,7 +160,7 @@ TEST(DeformableContactDeck, NewtonConvergesQuadraticallyOnceTheActiveSetSettles)
   // A soft penalty (contact stiffness comparable to the membranes'), so that the contact
   // increments need several iterations and the order can be measured.
   const double eps = 0.05;
-  const Model m = read_deck_text(replace(kTubes, "PENALTY", "0.05"), "tubes-soft.yaml");
+  const Model m = read_deck_text(contact_tubes_deck("0.05"), "tubes-soft.yaml");
   Capture cap;
   Analysis a(m);
   a.run(cap);
@@ -292,8 +253,7 @@ TEST(DeformableContactDeck, PatchTestAnnulusOnADeformableFlatMaster) {
 // tangent at the final state, every slave node active, matches central differences of the
 // residual (the contact elements' windows straddle master nodes and the chain's ends).
 TEST(DeformableContactDeck, SmoothMasterTangentOnNonMatchingTubes) {
-  std::string deck = replace(kTubes, "PENALTY", "1e3");
-  deck = replace(deck, "to: [1.2, 1], elements: 8}", "to: [1.2, 1], elements: 11}");
+  std::string deck = contact_tubes_deck("1e3", 11);
   const Model m = read_deck_text(deck, "tubes-8-11.yaml");
   ASSERT_EQ(m.contacts[0].master_surface, ContactPair::MasterSurface::smooth);
   Capture cap;

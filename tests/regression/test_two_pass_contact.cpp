@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "../support/capture.hpp"
+#include "../support/contact_tubes.hpp"
 #include "../support/system_fd.hpp"
 #include "../support/vtu.hpp"
 #include "output/vtk_writer.hpp"
@@ -23,46 +24,9 @@ using namespace tunica::test;
 
 namespace {
 
-const std::string kTubes = R"(title: neo-Hookean tube inflated against a Fung tube
-units: {length: mm, force: N}
-materials:
-  soft: {type: neo_hookean, mu: 0.1 MPa}
-  wall: {type: fung, c: 0.2 MPa, a1: 1.0, a2: 1.0, a4: 0.1}
-parts:
-  balloon:
-    element: axisymmetric_membrane
-    material: soft
-    thickness: 0.1 mm
-    mesh: {type: line, from: [1, 0], to: [1, 1], elements: 8}
-  artery:
-    element: axisymmetric_membrane
-    material: wall
-    thickness: 0.1 mm
-    mesh: {type: line, from: [1.2, 0], to: [1.2, 1], elements: ARTERY}
-boundary:
-  b0: {node_set: balloon.start, dofs: [z]}
-  b1: {node_set: balloon.end, dofs: [z]}
-  a0: {node_set: artery.start, dofs: [z]}
-  a1: {node_set: artery.end, dofs: [z]}
-loads:
-  lumen: {type: pressure, part: balloon}
-contact:
-  press: {slave: balloon, master: artery, master_orientation: reversed, penalty: 1e3, offset: 0.1 mm, MORE}
-solver: {residual_tolerance: 1e-11}
-steps:
-  - {name: free, increments: 3, set: {lumen: 0.003}}
-  - {name: contact, increments: 6, set: {lumen: 0.009}}
-output:
-  vtk: false
-  history:
-    - {quantity: contact_pressure, contact: press, name: pc_max}
-    - {quantity: contact_pressure, contact: press, name: pc_min, reduce: min}
-    - {quantity: contact_force, contact: press}
-    - {quantity: contact_penetration, contact: press}
-)";
 
 std::string tubes(int artery, const std::string& more) {
-  return replace(replace(kTubes, "ARTERY", std::to_string(artery)), ", MORE", more);
+  return contact_tubes_deck("1e3", artery, 6, more);
 }
 
 }  // namespace
