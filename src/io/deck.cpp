@@ -170,27 +170,38 @@ const std::vector<std::string> kTopKeys = {"title", "units", "materials", "parts
                                            "boundary", "loads", "rigid_surfaces", "contact", "solver",
                                            "steps", "output"};
 
-/// A modulus without a unit is in the deck's pressure unit (N/mm² = MPa for mm and N): `mu: 40`
-/// meant as kPa is a thousand times too stiff. Valid, but said, as for pressure targets.
+/// A pressure written without a unit is in the deck's pressure unit (N/mm² = MPa for mm and N):
+/// a load's `150` meant as mmHg is a million mmHg, `mu: 40` meant as kPa is 40 MPa. Valid, but
+/// said at its line, with its value in kPa (and mmHg for a load target) and the fix. True if it
+/// warned.
+bool warn_if_unitless_pressure(const DeckNode& v, Model& m, bool load_target) {
+  double written = 0;
+  std::string unit;
+  if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || !unit.empty() || written == 0) return false;
+  const double p = m.units.to_internal(written, "", Dimension::pressure);
+  const std::string& w = v.as_string();
+  const std::string deck_unit = m.units.display_unit(Dimension::pressure);
+  const double kpa = m.units.from_internal(p, "kPa", Dimension::pressure);
+  m.warnings.push_back(format_location(
+      v.where(), load_target ? fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = "
+                                           "{:.4g} mmHg); write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
+                                           w, deck_unit, kpa, m.units.from_internal(p, "mmHg", Dimension::pressure), w, w)
+                             : fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa); "
+                                           "write the unit to be sure, e.g. `{} kPa` or `{} MPa`",
+                                           w, deck_unit, kpa, w, w)));
+  return true;
+}
+
+/// The material constants that are pressures (moduli), one warning per key.
 void warn_unitless_moduli(const DeckNode& node, const ComponentSpec& spec, Model& m) {
   for (const ParamSpec& p : spec.params) {
     if (p.dim != Dimension::pressure || !node.has(p.name)) continue;
     const DeckNode given = node[p.name];
-    std::vector<DeckNode> values;
-    if (given.is_scalar()) values.push_back(given);
-    else if (given.is_sequence()) values = given.items();
-    for (const DeckNode& v : values) {
-      double written = 0;
-      std::string unit;
-      if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || !unit.empty() || written == 0) continue;
-      const double internal = m.units.to_internal(written, "", Dimension::pressure);
-      m.warnings.push_back(format_location(
-          v.where(), fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa); write the "
-                                 "unit to be sure, e.g. `{} kPa` or `{} MPa`",
-                                 v.as_string(), m.units.display_unit(Dimension::pressure),
-                                 m.units.from_internal(internal, "kPa", Dimension::pressure), v.as_string(),
-                                 v.as_string())));
-      break;  // one warning per key
+    if (given.is_sequence()) {
+      for (const DeckNode& v : given.items())
+        if (warn_if_unitless_pressure(v, m, false)) break;
+    } else {
+      warn_if_unitless_pressure(given, m, false);
     }
   }
 }
@@ -510,20 +521,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
           }
         }
         s.targets[target] = read_quantity(value, dim, m.units);
-        // A pressure without a unit is in the deck's units (N/mm² = MPa for mm and N): 150 meant as
-        // mmHg is a million mmHg. Valid, but said.
-        double written = 0;
-        std::string unit;
-        if (is_load && value.is_scalar() && split_quantity(value.as_string(), written, unit) && unit.empty() &&
-            written != 0)
-          m.warnings.push_back(format_location(
-              value.where(),
-              fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = {:.4g} mmHg); "
-                          "write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
-                          value.as_string(), m.units.display_unit(Dimension::pressure),
-                          m.units.from_internal(s.targets[target], "kPa", Dimension::pressure),
-                          m.units.from_internal(s.targets[target], "mmHg", Dimension::pressure), value.as_string(),
-                          value.as_string())));
+        if (is_load) warn_if_unitless_pressure(value, m, true);
         if (slopes > 0 && positions > 0 && s.targets[target] != 0)
           value.fail("boundary '" + target + "' holds slopes and positions: it can only be 0 (give the slopes their "
                      "own boundary to prescribe them)");
