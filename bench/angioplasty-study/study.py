@@ -79,9 +79,9 @@ def deck(unit, outline, balloon, surface, passes=1):
     if surface == "outer":
         s = replace_once(s, "radius: 0.35 mm, start_angle", "radius: 0.34 mm, start_angle")
         s = replace_once(s, "    penalty: 2e3 N/mm^3\n    offset: 0 mm", "    penalty: 2e3 N/mm^3\n    offset: 0.05 mm")
-    if passes == 2:  # the reverse pass too (contact `passes: 2`, theory manual §9.1)
-        s = replace_once(s, "    master: plaque.inner\n    master_orientation: reversed\n    penalty: 2e3 N/mm^3\n",
-                         "    master: plaque.inner\n    master_orientation: reversed\n    penalty: 2e3 N/mm^3\n    passes: 2\n")
+    # The deck's balloon–plaque pair has two passes (the reverse pass, theory manual §9.1); the
+    # study runs one or two.
+    s = replace_once(s, "    passes: 2\n", f"    passes: {passes}\n")
     # The lumen radius at the stenosis centre: the plaque's inner node on its middle row.
     s = replace_once(s, "  balloon_poles: {part: balloon, nodes: [0, 101]}",
                      "  balloon_poles: {part: balloon, nodes: [0, 101]}\n  lumen_centre: {part: plaque, nodes: [900]}")

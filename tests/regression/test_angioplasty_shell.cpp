@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "../support/capture.hpp"
+#include "../support/contact_pairs.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -47,7 +48,7 @@ AngioplastyResult run(const std::string& name, int balloon_elements) {
   r.cutbacks = c.cutbacks;
   r.lumen = c.rows.back().values[Capture::column(m, "lumen_min_mm")];
   r.force = c.rows.back().values[Capture::column(m, "force_balloon_plaque_N")];
-  const auto states = a.system().contact_states(a.displacement(), 1, a.loads().step);
+  const auto states = a.system().contact_states(a.displacement(), contact_pair(m, "balloon_plaque"), a.loads().step);
   std::vector<int> active;
   for (std::size_t k = 0; k < states.size(); ++k)
     if (states[k].pressure > 0) active.push_back(static_cast<int>(k));
