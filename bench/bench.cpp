@@ -2,7 +2,7 @@
 // (docs/performance.md). Not a test: it times, it does not check beyond the
 // closed form it prints for the sphere.
 //
-//   tunica-bench tube   --triangles N [--increments 6]
+//   tunica-bench tube   --triangles N [--increments 6] [--prestretch-increments 4]
 //   tunica-bench sphere --n N        [--increments 10]
 //   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE] [--paired]
 //           [--residual-tolerance R] [--energy-tolerance E]   (Newton tests; deck defaults 1e-9, 1e-12)
@@ -12,7 +12,7 @@
 //         x = 0 and y = 0 against rigid motion), circumferential/axial frame,
 //         staggered triangles (around = along), stretched axially to λz = 1.3 with
 //         40 mmHg in 4 increments (an in-vivo-like prestretch keeps the wall in tension), then
-//         inflated to 120 mmHg in 6 increments.
+//         inflated to 120 mmHg in 6 increments (--prestretch-increments, --increments).
 // sphere: the thin neo-Hookean sphere octant of theory manual (8.3) (R = 1 mm, H = 0.01 mm,
 //         μ = 1 MPa), n × n quads per patch, pressure to the closed-form value at λ = 1.2.
 //
@@ -56,6 +56,7 @@ struct Options {
   long triangles = 10000;
   int n = 41;
   int increments = 0;
+  int prestretch_increments = 4;  // tube: the prestretch step's
   std::string solver = "auto";
   bool symmetrized = false;
   double residual_tolerance = 1e-9;  // the deck defaults
@@ -74,7 +75,8 @@ std::string solver_block(const Options& o) {
 /// Tube deck: around = along so that the split quads are near-square (length 2πR).
 std::string tube_deck(const Options& o, int& around) {
   around = std::max(4, 4 * static_cast<int>(std::lround(std::sqrt(o.triangles / 2.0) / 4)));  // x0, y0 sets
-  return tunica::test::fung_tube_deck(around, solver_block(o), o.increments > 0 ? o.increments : 6);
+  return tunica::test::fung_tube_deck(around, solver_block(o), o.increments > 0 ? o.increments : 6,
+                                      o.prestretch_increments);
 }
 
 std::string sphere_deck(const Options& o) {
@@ -322,7 +324,11 @@ int main(int argc, char** argv) {
   app.add_option("problem", o.problem, "tube or sphere")->required()->check(CLI::IsMember({"tube", "sphere"}));
   app.add_option("--triangles", o.triangles, "tube: about this many triangles")->check(CLI::Range(100L, 100000000L));
   app.add_option("--n", o.n, "sphere: octant patches of n × n quads")->check(CLI::Range(2, 10000));
-  app.add_option("--increments", o.increments, "load increments (tube 6, sphere 10)")->check(CLI::Range(1, 1000));
+  app.add_option("--increments", o.increments, "load increments (tube: of the inflation, 6; sphere 10)")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--prestretch-increments", o.prestretch_increments, "tube: increments of the prestretch step")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   app.add_option("--solver", o.solver, "linear solver")->check(CLI::IsMember({"auto", "cholmod", "umfpack", "sparse_lu"}));
   app.add_flag("--symmetrized", o.symmetrized, "symmetrized pressure stiffness");
   app.add_option("--residual-tolerance", o.residual_tolerance, "Newton: ‖R‖/‖R₀‖ (deck default 1e-9)")

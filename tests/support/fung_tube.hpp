@@ -14,8 +14,9 @@
 namespace tunica::test {
 
 /// The deck with `around` × `around` split quads: `solver` is inserted as it is before `steps:`
-/// (a whole `solver: {…}` line with its newline, or empty); `increments` for the inflation.
-inline std::string fung_tube_deck(int around, const std::string& solver, int increments) {
+/// (a whole `solver: {…}` line with its newline, or empty); `increments` for the inflation,
+/// `prestretch_increments` for the prestretch.
+inline std::string fung_tube_deck(int around, const std::string& solver, int increments, int prestretch_increments = 4) {
   const double length = 2 * std::numbers::pi * 0.763;
   return fmt::format(R"(title: bench Fung tube, {0} x {0} split quads
 units: {{length: mm, force: N}}
@@ -36,11 +37,11 @@ boundary:
 loads:
   lumen: {{type: pressure, part: wall}}
 {2}steps:
-  - {{name: prestretch, increments: 4, set: {{stretch: {4} mm, lumen: 40 mmHg}}}}
+  - {{name: prestretch, increments: {5}, set: {{stretch: {4} mm, lumen: 40 mmHg}}}}
   - {{name: inflation, increments: {3}, set: {{lumen: 120 mmHg}}}}
 output: {{vtk: false}}
 )",
-                     around, length, solver, increments, 0.3 * length);
+                     around, length, solver, increments, 0.3 * length, prestretch_increments);
 }
 
 }  // namespace tunica::test
