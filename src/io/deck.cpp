@@ -806,7 +806,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     m.warnings.push_back(format_location(deck.has("boundary") ? deck["boundary"].where() : deck.where(), w));
   for (const std::string& w : frame_axis_warnings(m))
     m.warnings.push_back(format_location(deck.has("parts") ? deck["parts"].where() : deck.where(), w));
-  m.fingerprint = deck_fingerprint(deck, m);
+  m.fingerprint = deck_fingerprint(deck, m, &m.fingerprint_places);
   return m;
 }
 
