@@ -228,6 +228,18 @@ TEST(MessageClasses, DegenerateElementIsNamedByItsTagAndLineInTheMeshFile) {
   EXPECT_SAYS(c.o, "remove it or move its nodes apart");
 }
 
+TEST(MessageClasses, RepeatedNodeIsNamedByItsTagAndLineWithTheFix) {
+  // Element 17 names node 11 twice: a collapsed edge, to remove or remesh.
+  const std::string mesh = square_msh("17 2 2 1 1 11 12 11\n", 1);
+  const MeshCase c = check_mesh("repeated-node", mesh);
+  const std::string line = std::to_string(line_of(mesh, "17 2 2 1 1"));
+  EXPECT_SAYS(c.o, c.deck.string() + ":" + std::to_string(line_of(kMeshDeck, "mesh:")) + ":");
+  EXPECT_SAYS(c.o, c.mesh.string() + ": surface 'wall': element 17 (a triangle, line " + line +
+                       ") has the repeated node 11; its nodes are [11, 12, 11]");
+  EXPECT_SAYS(c.o, "an edge of it has collapsed onto one node");
+  EXPECT_SAYS(c.o, "remove element 17 (line " + line + ") from the mesh file, or remesh the surface");
+}
+
 TEST(MessageClasses, InvertedElementIsNamedByItsTagAndLineWithTheReversedOrder) {
   const std::string mesh = replace(square_msh(), "16 2 2 1 1 11 13 14", "16 2 2 1 1 11 14 13");
   const MeshCase c = check_mesh("inverted", mesh);
