@@ -208,6 +208,34 @@ TEST(MessageClasses, MissingMeshFileGivesThePathAsResolvedAndTheNearestName) {
   EXPECT_SAYS(o, "did you mean 'square.msh'?");
 }
 
+TEST(MessageClasses, MissingMeshFileProposesOnlyACloseNameElseListsTheMeshFiles) {
+  // `a.msh` is not a typo of `b.msh`, nor `tube_1mm.msh` of `tube_2mm.msh`: no "did you mean";
+  // the folder's mesh files are listed instead (not the deck). `wall.msh` for the script
+  // `wall.geo` is proposed.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "missing-mesh-far";
+  fs::create_directories(dir);
+  std::ofstream(dir / "b.msh") << square_msh();
+  std::ofstream(dir / "tube_2mm.msh") << square_msh();
+  std::ofstream(dir / "wall.geo") << "// a script\n";
+  const auto check = [&](const std::string& file) {
+    std::ofstream(dir / "deck.yaml") << replace(kMeshDeck, "file: square.msh", "file: " + file);
+    const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_SAYS(o, (dir / "deck.yaml").string() + ":" + std::to_string(line_of(kMeshDeck, "mesh:")) + ":");
+    EXPECT_SAYS(o, "no such mesh file: " + (dir / file).string());
+    return o;
+  };
+  for (const std::string file : {"a.msh", "tube_1mm.msh"}) {
+    const Outcome o = check(file);
+    EXPECT_EQ(o.output.find("did you mean"), std::string::npos) << o.output;
+    EXPECT_SAYS(o, "; the mesh files in that folder are: b.msh, tube_2mm.msh, wall.geo");
+  }
+  EXPECT_SAYS(check("wall.msh"), "; did you mean 'wall.geo'?");
+  // Many mesh files: counted, not listed.
+  for (int k = 0; k < 9; ++k) std::ofstream(dir / ("part" + std::to_string(k) + ".msh")) << square_msh();
+  EXPECT_SAYS(check("a.msh"), "; that folder holds 12 mesh files, none with a near name");
+}
+
 TEST(MessageClasses, SurfaceFormatsAsMeshSayHowToMakeANamedSurface) {
   for (const std::string ext : {"stl", "vtk", "vtp", "obj", "ply"}) {
     const MeshCase c = check_mesh("surface-" + ext, "solid wall\n", "wall." + ext);
