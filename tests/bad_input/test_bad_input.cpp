@@ -34,6 +34,12 @@ void expect_error(const std::string& name, const std::string& from, const std::s
   EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
 }
 
+/// `pattern` with each "{}" replaced by the line of the next of `needles` in `text`.
+std::string fmt_lines(std::string pattern, const std::string& text, const std::vector<std::string>& needles) {
+  for (const std::string& n : needles) pattern.replace(pattern.find("{}"), 2, std::to_string(line_of(text, n)));
+  return pattern;
+}
+
 }  // namespace
 
 TEST(BadInput, TheExampleItselfIsValid) {
@@ -102,8 +108,28 @@ TEST(BadInput, NegativeThickness) {
 }
 
 TEST(BadInput, FungQuadraticFormNotPositiveDefinite) {
-  expect_error("fung-not-convex", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a1", "Fung quadratic form is not positive definite",
-               "    a1: 0.68238");
+  // The message stands at a4, shows the failed condition with the constants as written and
+  // their lines, the bound on a4, and the factor 2 of sources that write a4 E1E2.
+  const std::string deck = replace(read_text(kExample), "a4: 0.1067 ", "a4: 0.9 ");
+  expect_error("fung-not-convex", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a4",
+               "the Fung quadratic form is not positive definite (the two-dimensional approach, a3 = a5 = a6 = 0, "
+               "needs a1 > 0, a2 > 0 and a1·a2 − a4² > 0), so W would not be convex: a1·a2 − a4² = 0.68238 × 0.60558 "
+               "− (0.9)² = -0.3968 ≤ 0",
+               "    a4: 0.9");
+  expect_error("fung-not-convex-values", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a4",
+               fmt_lines("(a1 = 0.68238 (line {}), a2 = 0.60558 (line {}), a4 = 0.9 (line {})): |a4| must be < "
+                         "√(a1·a2) = 0.6428. If your source writes Q with a4 E1E2 rather than 2 a4 E1E2, give half its "
+                         "value: a4: 0.45",
+                         deck, {"a1: 0.68238", "a2: 0.60558", "a4: 0.9"}),
+               "    a4: 0.9");
+  // a1 itself not positive: at a1.
+  expect_error("fung-a1", "a1: 0.68238", "a1: -0.5", "materials.aorta.a1", "a1 = -0.5 ≤ 0 (a1 = -0.5 (line 12)");
+  // The full matrix: its determinant, and the a3 that would do.
+  expect_error("fung-3d", "    a4: 0.1067", "    a4: 0.1067\n    a3: 0.1\n    a5: 0.5\n    a6: 0.4", "materials.aorta.a3",
+               "its determinant is -0.1846 ≤ 0 (a1 = 0.68238 (line 12), a2 = 0.60558 (line 13), a3 = 0.1 (line 15), a4 "
+               "= 0.1067 (line 14), a5 = 0.5 (line 16), a6 = 0.4 (line 17)): with these a1, a2, a4, a5, a6, a3 must be "
+               "> 0.5594",
+               "    a3: 0.1");
 }
 
 TEST(BadInput, NegativeFungConstant) {

@@ -133,6 +133,14 @@ TEST(MessageClasses, AnglePlainNumberSuggestsDegrees) {
   EXPECT_SAYS(o, "for degrees write `40 deg`");
 }
 
+TEST(MessageClasses, FungConstantsWithoutAConvexEnergyShowTheFailedConditionAndTheBound) {
+  const std::string deck = replace(read_text(kExample), "a4: 0.1067 ", "a4: 0.9 ");
+  const Outcome o = expect_deck_message("fung", "a4: 0.1067 ", "a4: 0.9 ", "a4: 0.9", "materials.aorta.a4",
+                                        "a1·a2 − a4² = 0.68238 × 0.60558 − (0.9)² = -0.3968 ≤ 0",
+                                        "|a4| must be < √(a1·a2) = 0.6428");
+  EXPECT_SAYS(o, "a4 = 0.9 (line " + std::to_string(line_of(deck, "a4: 0.9")) + ")");
+}
+
 // ---------------------------------------------------------------- types and names
 
 TEST(MessageClasses, UnknownMaterialTypeListsTheTypes) {
