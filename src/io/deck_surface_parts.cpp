@@ -11,6 +11,7 @@
 #include "core/printable.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_names.hpp"
+#include "io/unitless_values.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/surface_formats.hpp"
@@ -234,6 +235,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
     if (part.frame.type == FrameRule::Type::mesh)
       frame["type"].fail("frame `mesh` needs a Gmsh mesh with an element-data view");
     const Params mp = read_params(mesh, gen->second.spec, m.units, {"type"});
+    warn_unitless_values(mesh, gen->second.spec, m);
     const SurfaceMesh sm = gen->second.make(mp);
     if (static_cast<long>(m.num_nodes()) + static_cast<long>(sm.nodes.size()) > kMaxNodes)
       mesh.fail(fmt::format("the model would have more than {} nodes", kMaxNodes));

@@ -250,6 +250,47 @@ TEST(BadInput, AModulusWithoutAUnitIsValidButSaid) {
   EXPECT_NE(o.output.find("`61.163 kPa`"), std::string::npos) << o.output;
 }
 
+TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
+  // `beta: 0.7` is 0.7 rad = 40.1°: in range, so valid, but said at its line and key with how
+  // it was read and the fix; so are a meridian arc's and a tube's angles. 0 is the same in
+  // every unit and is not said.
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 0.7\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  Outcome o = run_cli("check " + write_deck("angle-no-unit", deck));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("tunica: warning: " + fs::path(write_deck("angle-no-unit", deck)).string() + ":" +
+                          std::to_string(line_of(deck, "beta: 0.7")) +
+                          ":11: key 'materials.aorta.beta': 0.7 has no unit and is read in radians (0.7 rad = 40.11 "
+                          "deg); write the unit to be sure, e.g. `0.7 rad`, or `0.7 deg` if degrees are meant"),
+            std::string::npos)
+      << o.output;
+  o = run_cli("check " + write_deck("angle-zero", replace(deck, "beta: 0.7", "beta: 0")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_EQ(o.output.find("warning"), std::string::npos) << o.output;
+  const std::string sphere = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  o = run_cli("check " + write_deck("arc-no-unit", replace(sphere, "end_angle: 90 deg", "end_angle: 1.5")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.balloon.mesh.end_angle': 1.5 has no unit and is read in radians (1.5 rad = 85.94 deg)"),
+            std::string::npos)
+      << o.output;
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  o = run_cli("check " + write_deck("sector-no-unit", replace(quarter, "sector: 90 deg", "sector: 1.5707963267948966")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.wall.mesh.sector': 1.5707963267948966 has no unit and is read in radians"), std::string::npos)
+      << o.output;
+}
+
+TEST(BadInput, NoExampleDeckWarns) {
+  // The examples write a unit on every pressure and angle; none of them is warned about.
+  for (const auto& entry : fs::directory_iterator(std::string(TUNICA_SOURCE_DIR) + "/examples")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const Outcome o = run_cli("check --allow-scripts " + entry.path().string());
+    EXPECT_EQ(o.exit_code, 0) << entry.path() << ": " << o.output;
+    EXPECT_EQ(o.output.find("warning"), std::string::npos) << entry.path() << ": " << o.output;
+  }
+}
+
 TEST(BadInput, APressureGivenToABoundaryNamesTheLoads) {
   // `stretch` is a displacement boundary: a pressure there means the load was meant.
   expect_error("pressure-to-boundary", "set: {stretch: 0.6 mm}", "set: {stretch: 150 mmHg}", "steps[0].set.stretch",
