@@ -286,6 +286,10 @@ int main(int argc, char** argv) {
       std::fputs(tunica::deck_reference_markdown().c_str(), stdout);
       return 0;
     }
+  } catch (const tunica::MeshingInterrupted& e) {
+    // Only the deck or the script was being read: nothing was written yet.
+    std::fprintf(stderr, "tunica: %s; nothing was written\n", for_terminal(e.what()).c_str());
+    return 128 + e.signal();
   } catch (const tunica::InputError& e) {
     std::fprintf(stderr, "tunica: input error: %s\n", for_terminal(e.what()).c_str());
     return kInputErrorExit;
