@@ -136,13 +136,15 @@ struct TempDir {
     buf.push_back('\0');
     if (!::mkdtemp(buf.data())) throw std::runtime_error(std::string("cannot create a temporary folder: ") + std::strerror(errno));
     path = buf.data();
-    // The lock is taken under another name and then renamed: a `lock` is always held.
+    // The lock is taken under another name and then renamed: a `lock` is always held. Where
+    // locks are not supported (some network file systems) the folder goes without one: it
+    // is still removed at the end, only not after a SIGKILL.
     const std::string fresh = path + "/" + kLockName + ".new";
     lock = ::open(fresh.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0600);
-    if (lock < 0 || ::flock(lock, LOCK_EX) != 0 || ::rename(fresh.c_str(), (path + "/" + kLockName).c_str()) != 0) {
-      const std::string why = std::strerror(errno);
-      remove();
-      throw std::runtime_error("cannot lock the temporary folder " + path + ": " + why);
+    if (lock >= 0 && (::flock(lock, LOCK_EX) != 0 || ::rename(fresh.c_str(), (path + "/" + kLockName).c_str()) != 0)) {
+      ::close(lock);
+      lock = -1;
+      ::unlink(fresh.c_str());
     }
   }
   ~TempDir() { remove(); }

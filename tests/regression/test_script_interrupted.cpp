@@ -87,13 +87,24 @@ bool wait_for_meshing(const fs::path& tmp, pid_t pid) {
   return false;
 }
 
-/// Exit status of `pid`, and the seconds it took to end.
-std::pair<int, double> wait_timed(pid_t pid) {
-  const auto t0 = std::chrono::steady_clock::now();
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return {status, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
-}
+/// A started check, killed and reaped if the test stops before it has ended.
+struct Child {
+  pid_t pid;
+  ~Child() {
+    if (pid > 0) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+    }
+  }
+  /// Exit status, and the seconds it took to end.
+  std::pair<int, double> wait_timed() {
+    const auto t0 = std::chrono::steady_clock::now();
+    int status = 0;
+    waitpid(pid, &status, 0);
+    pid = -1;
+    return {status, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+  }
+};
 
 // The script's own command keeps Gmsh busy for 20 s.
 const std::string kBusy = "System \"sleep 20\";\n";
@@ -104,10 +115,10 @@ TEST(ScriptInterrupted, SigtermOrCtrlCWhileGmshMeshesEndsAtOnceWithAMessageAndNo
   for (const int sig : {SIGTERM, SIGINT}) {
     const fs::path dir = scratch("signal-" + std::to_string(sig));
     const std::string deck = write_deck(dir, kBusy);
-    const pid_t pid = start_check(deck, dir / "tmp", dir / "check.log");
-    ASSERT_TRUE(wait_for_meshing(dir / "tmp", pid)) << read_text((dir / "check.log").string());
-    kill(pid, sig);
-    const auto [status, seconds] = wait_timed(pid);
+    Child check{start_check(deck, dir / "tmp", dir / "check.log")};
+    ASSERT_TRUE(wait_for_meshing(dir / "tmp", check.pid)) << read_text((dir / "check.log").string());
+    kill(check.pid, sig);
+    const auto [status, seconds] = check.wait_timed();
     const std::string log = read_text((dir / "check.log").string());
     ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ", without a message: " << log;
     EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << log;
@@ -126,17 +137,18 @@ TEST(ScriptInterrupted, TheFolderOfAKilledCheckIsRemovedByTheNextMeshingButNotTh
   const fs::path tmp = dir / "tmp";
   const std::string busy = write_deck(dir, kBusy);
   // Killed outright while Gmsh runs: its folder stays behind.
-  const pid_t pid = start_check(busy, tmp, dir / "killed.log");
+  Child killed{start_check(busy, tmp, dir / "killed.log")};
+  const pid_t pid = killed.pid;
   ASSERT_TRUE(wait_for_meshing(tmp, pid)) << read_text((dir / "killed.log").string());
   kill(pid, SIGKILL);
-  wait_timed(pid);
+  killed.wait_timed();
   const std::vector<fs::path> left = geo_folders(tmp);
   ASSERT_EQ(left.size(), 1u);
   EXPECT_EQ(left[0].filename().string().rfind("tunica-geo-" + std::to_string(pid) + "-", 0), 0u)
       << left[0] << ": the folder names its process";
   // A check that meshes: it removes the killed check's folder before it makes its own.
-  const pid_t running = start_check(busy, tmp, dir / "running.log");
-  ASSERT_TRUE(wait_for_meshing(tmp, running)) << read_text((dir / "running.log").string());
+  Child running{start_check(busy, tmp, dir / "running.log")};
+  ASSERT_TRUE(wait_for_meshing(tmp, running.pid)) << read_text((dir / "running.log").string());
   const std::vector<fs::path> now = geo_folders(tmp);
   ASSERT_EQ(now.size(), 1u) << "the stale folder is still there";
   EXPECT_NE(now[0], left[0]);
@@ -144,10 +156,10 @@ TEST(ScriptInterrupted, TheFolderOfAKilledCheckIsRemovedByTheNextMeshingButNotTh
   const fs::path quick_dir = dir / "quick";
   fs::create_directories(quick_dir);
   const std::string quick = write_deck(quick_dir, "");
-  const int status = wait_timed(start_check(quick, tmp, dir / "quick.log")).first;
+  const int status = Child{start_check(quick, tmp, dir / "quick.log")}.wait_timed().first;
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text((dir / "quick.log").string());
   EXPECT_EQ(geo_folders(tmp), now);
-  kill(running, SIGTERM);
-  wait_timed(running);
+  kill(running.pid, SIGTERM);
+  running.wait_timed();
   EXPECT_TRUE(geo_folders(tmp).empty());
 }
