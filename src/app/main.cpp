@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "fit/fit_command.hpp"
 #include "io/deck.hpp"
@@ -62,23 +63,48 @@ void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, 
     if (reached(e)) now[e.key] = &e;
   for (const auto& e : r.fingerprint)
     if (reached(e)) then[e.key] = &e;
-  std::vector<std::string> changes;
+  // Each change with where to look in the deck: the line of the key, or for a key no longer
+  // given, that of the nearest map or list that held it.
+  struct Change {
+    std::string text;
+    int line = 0, column = 0;
+  };
+  const auto change = [&](const std::string& key, const std::string& what) {
+    Change c;
+    std::string at = key;
+    for (;;) {
+      if (const auto it = m.fingerprint_places.find(at); it != m.fingerprint_places.end()) {
+        std::tie(c.line, c.column) = it->second;
+        break;
+      }
+      const std::size_t cut = at.find_last_of(".[");
+      if (cut == std::string::npos || cut == 0) break;
+      at.resize(cut);
+    }
+    c.text = c.line == 0 ? key + " " + what
+             : at == key ? fmt::format("line {}: {} {}", c.line, key, what)
+                         : fmt::format("line {} ('{}'): {} {}", c.line, at, key, what);
+    return c;
+  };
+  std::vector<Change> changes;
   for (const auto& e : r.fingerprint) {
     if (!reached(e)) continue;
     const auto it = now.find(e.key);
     if (it == now.end())
-      changes.push_back(fmt::format("{} (was {}, now not given)", e.key, shown(e.value)));
+      changes.push_back(change(e.key, fmt::format("(was {}, now not given)", shown(e.value))));
     else if (it->second->value != e.value)
-      changes.push_back(fmt::format("{} (was {}, now {})", e.key, shown(e.value), shown(it->second->value)));
+      changes.push_back(change(e.key, fmt::format("(was {}, now {})", shown(e.value), shown(it->second->value))));
   }
   for (const auto& e : m.fingerprint)
-    if (reached(e) && !then.count(e.key)) changes.push_back(fmt::format("{} (not given before, now {})", e.key, shown(e.value)));
+    if (reached(e) && !then.count(e.key))
+      changes.push_back(change(e.key, fmt::format("(not given before, now {})", shown(e.value))));
   if (changes.empty()) return;
   std::string list;
-  for (std::size_t k = 0; k < changes.size() && k < 8; ++k) list += "\n  " + changes[k];
+  for (std::size_t k = 0; k < changes.size() && k < 8; ++k) list += "\n  " + changes[k].text;
   if (changes.size() > 8) list += fmt::format("\n  and {} more", changes.size() - 8);
+  // The message stands at the first change's line; the list names each key.
   throw tunica::InputError(
-      {m.deck_file, 0, 0, ""},
+      {m.deck_file, changes.front().line, changes.front().column, ""},
       fmt::format("the deck differs from the run to resume in what its converged increments depend on ({} in {}):{}\n"
                   "Undo the change, or start a new run in a new folder. Free to change on a restart: title, solver, "
                   "the steps not yet reached, each step's solver and name, and output other than history and "
@@ -260,6 +286,10 @@ int main(int argc, char** argv) {
       std::fputs(tunica::deck_reference_markdown().c_str(), stdout);
       return 0;
     }
+  } catch (const tunica::MeshingInterrupted& e) {
+    // Only the deck or the script was being read: nothing was written yet.
+    std::fprintf(stderr, "tunica: %s; nothing was written\n", for_terminal(e.what()).c_str());
+    return 128 + e.signal();
   } catch (const tunica::InputError& e) {
     std::fprintf(stderr, "tunica: input error: %s\n", for_terminal(e.what()).c_str());
     return kInputErrorExit;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 
 #include "core/printable.hpp"
 
@@ -45,6 +46,44 @@ std::string nearest_name(std::string_view name, const std::vector<std::string>& 
   }
   const std::size_t allowed = name.size() <= 5 ? 1 : 2;
   return !best.empty() && (best_d == 0 || (best_d <= allowed && best_d < name.size())) ? best : "";
+}
+
+namespace {
+
+/// Stem and extension (with its dot, lower case) of a file name; a leading dot is not an extension.
+std::pair<std::string, std::string> stem_and_extension(std::string_view name) {
+  const std::size_t dot = name.rfind('.');
+  if (dot == std::string_view::npos || dot == 0) return {lower(name), ""};
+  return {lower(name.substr(0, dot)), lower(name.substr(dot))};
+}
+
+std::string digits_of(const std::string& s) {
+  std::string d;
+  for (char c : s)
+    if (std::isdigit(static_cast<unsigned char>(c))) d += c;
+  return d;
+}
+
+}  // namespace
+
+std::string nearest_file_name(std::string_view name, const std::vector<std::string>& files) {
+  constexpr std::size_t kLongest = 200;  // as nearest_name: a bound on the work
+  if (name.empty() || name.size() > kLongest) return "";
+  const auto [stem, ext] = stem_and_extension(name);
+  const std::size_t allowed = stem.size() < 3 ? 0 : stem.size() < 7 ? 1 : 2;
+  std::string best;
+  std::size_t best_d = 0;
+  for (const auto& f : files) {
+    if (f == name || f.size() > kLongest) continue;
+    const auto [s, e] = stem_and_extension(f);
+    if (e != ext || digits_of(s) != digits_of(stem)) continue;
+    const std::size_t d = edit_distance(stem, s);
+    if (d <= allowed && (best.empty() || d < best_d)) best = f, best_d = d;
+  }
+  if (!best.empty()) return best;
+  for (const auto& f : files)
+    if (f != name && f.size() <= kLongest && stem_and_extension(f).first == stem) return f;
+  return "";
 }
 
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& known) {

@@ -13,6 +13,15 @@ namespace tunica {
 /// differing only in letter case always is. "" if none is.
 std::string nearest_name(std::string_view name, const std::vector<std::string>& known);
 
+/// The file name in `files` that `name` (a file name without folder) is likely a typo of, or ""
+/// if none is really close. Names are compared without letter case. First those with the
+/// same extension, by their stems (the name without the extension): at most one edit for a
+/// stem of 3 to 6 characters, two from 7 on, none below 3 (about one edit in four
+/// characters), and the same digits in the same order (`tube_1mm` and `tube_2mm` are two
+/// meshes, not a typo). Then one whose stem is the same with another extension (`wall.msh` for
+/// `wall.geo`). The caller passes only the files that could be meant (e.g. meshes).
+std::string nearest_file_name(std::string_view name, const std::vector<std::string>& files);
+
 /// "(the <what> are: a, b, c; did you mean 'b'?)" for an undefined `name`: at most
 /// `max_listed` names, then how many there are in all; "(there are no <what>)" for none.
 /// Names are quoted through printable().

@@ -22,6 +22,7 @@
 #include "io/deck_shell_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
+#include "io/unitless_values.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/rigid_motion_check.hpp"
@@ -170,42 +171,6 @@ const std::vector<std::string> kTopKeys = {"title", "units", "materials", "parts
                                            "boundary", "loads", "rigid_surfaces", "contact", "solver",
                                            "steps", "output"};
 
-/// A pressure written without a unit is in the deck's pressure unit (N/mm² = MPa for mm and N):
-/// a load's `150` meant as mmHg is a million mmHg, `mu: 40` meant as kPa is 40 MPa. Valid, but
-/// said at its line, with its value in kPa (and mmHg for a load target) and the fix. True if it
-/// warned.
-bool warn_if_unitless_pressure(const DeckNode& v, Model& m, bool load_target) {
-  double written = 0;
-  std::string unit;
-  if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || !unit.empty() || written == 0) return false;
-  const double p = m.units.to_internal(written, "", Dimension::pressure);
-  const std::string& w = v.as_string();
-  const std::string deck_unit = m.units.display_unit(Dimension::pressure);
-  const double kpa = m.units.from_internal(p, "kPa", Dimension::pressure);
-  m.warnings.push_back(format_location(
-      v.where(), load_target ? fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = "
-                                           "{:.4g} mmHg); write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
-                                           w, deck_unit, kpa, m.units.from_internal(p, "mmHg", Dimension::pressure), w, w)
-                             : fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa); "
-                                           "write the unit to be sure, e.g. `{} kPa` or `{} MPa`",
-                                           w, deck_unit, kpa, w, w)));
-  return true;
-}
-
-/// The material constants that are pressures (moduli), one warning per key.
-void warn_unitless_moduli(const DeckNode& node, const ComponentSpec& spec, Model& m) {
-  for (const ParamSpec& p : spec.params) {
-    if (p.dim != Dimension::pressure || !node.has(p.name)) continue;
-    const DeckNode given = node[p.name];
-    if (given.is_sequence()) {
-      for (const DeckNode& v : given.items())
-        if (warn_if_unitless_pressure(v, m, false)) break;
-    } else {
-      warn_if_unitless_pressure(given, m, false);
-    }
-  }
-}
-
 SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSettings base) {
   if (!node.defined()) return base;
   node.expect_map_with_keys([] {
@@ -240,6 +205,7 @@ void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
                       did_you_mean(type, {"line", "arc"}));
   if (node.has("frame")) node["frame"].fail("an axisymmetric part's frame is fixed (1 = hoop, 2 = meridian)");
   const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
+  warn_unitless_values(mesh, gen->second.spec, m);
   if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
     mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
   const Meridian points = gen->second.make(mp);
@@ -521,7 +487,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
           }
         }
         s.targets[target] = read_quantity(value, dim, m.units);
-        if (is_load) warn_if_unitless_pressure(value, m, true);
+        if (is_load) warn_if_unitless(value, Dimension::pressure, m, true);
         if (slopes > 0 && positions > 0 && s.targets[target] != 0)
           value.fail("boundary '" + target + "' holds slopes and positions: it can only be 0 (give the slopes their "
                      "own boundary to prescribe them)");
@@ -791,7 +757,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
       m.materials[name] = t->second.make(p);
     else
       m.solid_materials[name] = st->second.make(p);
-    warn_unitless_moduli(node, spec, m);
+    warn_unitless_values(node, spec, m);
   }
   read_parts(deck, m, options);
   read_node_sets(deck, m);
@@ -806,7 +772,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     m.warnings.push_back(format_location(deck.has("boundary") ? deck["boundary"].where() : deck.where(), w));
   for (const std::string& w : frame_axis_warnings(m))
     m.warnings.push_back(format_location(deck.has("parts") ? deck["parts"].where() : deck.where(), w));
-  m.fingerprint = deck_fingerprint(deck, m);
+  m.fingerprint = deck_fingerprint(deck, m, &m.fingerprint_places);
   return m;
 }
 

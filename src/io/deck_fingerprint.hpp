@@ -9,7 +9,11 @@
 // under the same name is caught. Left out, free to change on a restart: `title`, `solver`,
 // each step's `solver` and `name`, and the rest of `output` (how often frames and checkpoints
 // are written). A value respelt (`30 kPa` as `0.03 MPa`) or a default written out counts as a
-// change: the check compares what is written.
+// change: the check compares what is written. `places` receives the line and column of every
+// key it holds, and of the maps and lists holding them (Model::fingerprint_places).
+#include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "io/deck_node.hpp"
@@ -17,6 +21,7 @@
 
 namespace tunica {
 
-std::vector<FingerprintEntry> deck_fingerprint(const DeckNode& deck, const Model& m);
+std::vector<FingerprintEntry> deck_fingerprint(const DeckNode& deck, const Model& m,
+                                               std::map<std::string, std::pair<int, int>>* places = nullptr);
 
 }  // namespace tunica

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "contributions/element_type.hpp"
@@ -10,6 +11,7 @@
 #include "core/printable.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_names.hpp"
+#include "io/unitless_values.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/mesh_checks.hpp"
 #include "mesh/surface_formats.hpp"
@@ -122,24 +124,40 @@ void add_blocks(const SurfaceMesh::Surface& s, const std::vector<int>& global, b
   part.nodes.erase(std::unique(part.nodes.begin(), part.nodes.end()), part.nodes.end());
 }
 
-/// "no such mesh file: <path as resolved>", what a relative path is relative to, and a file
-/// of a near name in that folder.
+/// A file a deck could mean as a mesh: a Gmsh mesh or script, or a surface format that
+/// surface_format_advice explains.
+bool mesh_like(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const char* e : {".msh", ".geo", ".stl", ".vtk", ".vtp", ".vtu", ".obj", ".ply", ".off"})
+    if (ext == e) return true;
+  return false;
+}
+
+/// "no such mesh file: <path as resolved>", what a relative path is relative to, and a mesh
+/// file of that folder whose name is really close (core/suggest.hpp, nearest_file_name); else
+/// the mesh files there when they are few.
 std::string missing_file_message(const std::string& written, const std::string& resolved) {
   namespace fs = std::filesystem;
+  constexpr std::size_t kListed = 8;
   std::error_code ec;
   const fs::path absolute = fs::absolute(resolved, ec);
   std::string s = "no such mesh file: " + printable((ec ? fs::path(resolved) : absolute).lexically_normal().string(), 200);
   if (fs::path(written).is_relative()) s += " ('" + printable(written, 200) + "' is read relative to the deck's folder)";
-  std::vector<std::string> near;
+  std::vector<std::string> meshes;
   const fs::path folder = fs::path(resolved).parent_path().empty() ? fs::path(".") : fs::path(resolved).parent_path();
+  if (!fs::exists(folder, ec)) return s + "; the folder " + printable(folder.string(), 200) + " does not exist either";
   std::size_t seen = 0;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end && seen < 1000; it.increment(ec), ++seen)
-    near.push_back(it->path().filename().string());
-  std::sort(near.begin(), near.end());
-  const std::string best = nearest_name(fs::path(resolved).filename().string(), near);
-  if (!best.empty()) s += "; did you mean '" + printable(best) + "'?";
-  else if (!fs::exists(folder, ec)) s += "; the folder " + printable(folder.string(), 200) + " does not exist either";
-  return s;
+    if (mesh_like(it->path()) && !it->is_directory(ec)) meshes.push_back(it->path().filename().string());
+  std::sort(meshes.begin(), meshes.end());
+  if (const std::string best = nearest_file_name(fs::path(resolved).filename().string(), meshes); !best.empty())
+    return s + "; did you mean '" + printable(best) + "'?";
+  if (meshes.empty()) return s + "; that folder holds no mesh file (.msh, or a .geo script)";
+  if (meshes.size() > kListed) return s + fmt::format("; that folder holds {} mesh files, none with a near name", meshes.size());
+  std::string list;
+  for (const auto& f : meshes) list += (list.empty() ? "" : ", ") + printable(f);
+  return s + "; the mesh files in that folder are: " + list;
 }
 
 }  // namespace
@@ -217,6 +235,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
     if (part.frame.type == FrameRule::Type::mesh)
       frame["type"].fail("frame `mesh` needs a Gmsh mesh with an element-data view");
     const Params mp = read_params(mesh, gen->second.spec, m.units, {"type"});
+    warn_unitless_values(mesh, gen->second.spec, m);
     const SurfaceMesh sm = gen->second.make(mp);
     if (static_cast<long>(m.num_nodes()) + static_cast<long>(sm.nodes.size()) > kMaxNodes)
       mesh.fail(fmt::format("the model would have more than {} nodes", kMaxNodes));

@@ -142,8 +142,15 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
     const DeckNode v = missing ? DeckNode(YAML::Load(p.default_text), node.file(), given.path(), node.where()) : given;
     Params::Value val;
     val.loc = v.where();
+    if (missing) {  // a default stands where the component's map does (params.hpp), not in its own text
+      val.loc = node.where();
+      val.loc.key = given.path();
+    }
     switch (p.type) {
-      case ParamType::number: val.nums = {read_quantity(v, p.dim, units)}; break;
+      case ParamType::number:
+        val.nums = {read_quantity(v, p.dim, units)};
+        val.written = v.as_string();
+        break;
       case ParamType::integer: val.nums = {static_cast<double>(v.as_integer())}; break;
       case ParamType::boolean: val.nums = {v.as_bool() ? 1.0 : 0.0}; break;
       case ParamType::text:

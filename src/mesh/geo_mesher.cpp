@@ -7,7 +7,9 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/file.h>
 #include <sys/prctl.h>
+#include <sys/stat.h>
 #include <fmt/format.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,7 +38,7 @@ constexpr int kExecFailed = 127;  // the child's status when exec failed
 std::mutex gmsh_mutex;  // one child at a time: the temporary folder and the pipe are per call anyway
 
 /// The parent received SIGINT or SIGTERM while Gmsh ran: thrown after the child has been
-/// ended, so that the temporary folder is removed on the way out; re-raised then.
+/// ended, so that the temporary folder is removed on the way out; MeshingInterrupted then.
 struct SignalDuringMeshing {
   int signal;
 };
@@ -87,20 +89,74 @@ private:
   struct sigaction old_int_ {}, old_term_ {};
 };
 
-/// A temporary folder, removed on every exit.
+/// Where the temporary folders are made: $TMPDIR, else /tmp.
+std::string temp_base() {
+  const char* base = std::getenv("TMPDIR");
+  return base && *base ? base : "/tmp";
+}
+
+constexpr const char* kFolderPrefix = "tunica-geo-";
+constexpr const char* kLockName = "lock";
+
+/// Removes the temporary folders of meshings whose process has ended without removing its
+/// own (killed with SIGKILL, a power loss): each folder holds a file `lock` that its process
+/// holds locked (flock) for as long as it meshes, and the kernel releases the lock with the
+/// process however it ends. A folder whose lock this process can take is stale. Only this
+/// user's folders are considered; one without a `lock` (being made this instant, or of a
+/// Tunica before locks) is left alone.
+void remove_stale_folders(const std::string& base) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> stale;
+  std::error_code ec;
+  std::size_t seen = 0;
+  for (fs::directory_iterator it(base, ec), end; !ec && it != end && seen < 10000; it.increment(ec), ++seen) {
+    if (it->path().filename().string().rfind(kFolderPrefix, 0) != 0) continue;
+    struct stat st {};
+    if (::lstat(it->path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::geteuid()) continue;
+    stale.push_back(it->path());
+  }
+  for (const fs::path& dir : stale) {
+    const int fd = ::open((dir / kLockName).c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    if (fd < 0) continue;
+    if (::flock(fd, LOCK_EX | LOCK_NB) == 0) fs::remove_all(dir, ec);  // removed while holding its lock
+    ::close(fd);
+  }
+}
+
+/// A temporary folder `tunica-geo-<pid>-XXXXXX`, removed on every exit, and locked for as long
+/// as it exists (remove_stale_folders). Made after the stale ones are removed.
 struct TempDir {
   std::string path;
+  int lock = -1;
   TempDir() {
-    const char* base = std::getenv("TMPDIR");
-    std::string templ = std::string(base && *base ? base : "/tmp") + "/tunica-geo-XXXXXX";
+    const std::string base = temp_base();
+    remove_stale_folders(base);
+    std::string templ = base + "/" + kFolderPrefix + std::to_string(::getpid()) + "-XXXXXX";
     std::vector<char> buf(templ.begin(), templ.end());
     buf.push_back('\0');
     if (!::mkdtemp(buf.data())) throw std::runtime_error(std::string("cannot create a temporary folder: ") + std::strerror(errno));
     path = buf.data();
+    // The lock is taken under another name and then renamed: a `lock` is always held. Where
+    // locks are not supported (some network file systems) the folder goes without one: it
+    // is still removed at the end, only not after a SIGKILL.
+    const std::string fresh = path + "/" + kLockName + ".new";
+    lock = ::open(fresh.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0600);
+    if (lock >= 0 && (::flock(lock, LOCK_EX) != 0 || ::rename(fresh.c_str(), (path + "/" + kLockName).c_str()) != 0)) {
+      ::close(lock);
+      lock = -1;
+      ::unlink(fresh.c_str());
+    }
   }
-  ~TempDir() {
+  ~TempDir() { remove(); }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+private:
+  void remove() {
     std::error_code ec;
-    std::filesystem::remove_all(path, ec);
+    std::filesystem::remove_all(path, ec);  // before the lock is let go
+    if (lock >= 0) ::close(lock);
+    lock = -1;
   }
 };
 
@@ -246,14 +302,19 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
   return read_file_bounded(out, kMaxMshBytes, "mesh Gmsh wrote");
 }
 
+MeshingInterrupted::MeshingInterrupted(int signal, const std::string& script)
+    : std::runtime_error(fmt::format("interrupted by signal {} ({}) while Gmsh meshed the script {}: Gmsh was ended "
+                                     "and its temporary folder removed",
+                                     signal, strsignal(signal), printable(script, 200))),
+      signal_(signal) {}
+
 std::string mesh_geo_script(const std::string& path, const GeoMeshFormat& format) {
   try {
     return mesh_in_child(path, format);
   } catch (const SignalDuringMeshing& i) {
-    // The child has ended and the temporary folder is gone: let the signal take effect
-    // as it would have (the previous handler, or the default action).
-    std::raise(i.signal);
-    throw InputError(SourceLocation{path, 0, 0, ""}, "interrupted while Gmsh meshed the script");
+    // The child has ended and the temporary folder is gone (the SignalGuard has restored the
+    // handlers): the caller says so and exits.
+    throw MeshingInterrupted(i.signal, path);
   }
 }
 

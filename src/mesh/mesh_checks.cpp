@@ -39,6 +39,13 @@ struct ElementView {
     return e < nt ? fmt::format("element {} (triangle {})", e, e)
                   : fmt::format("element {} (quadrilateral {})", e, e - nt);
   }
+  /// "element 17 (line 22)", or "element 3" for a mesh without tags: how a fix names it.
+  std::string label(int e) const {
+    const int nt = static_cast<int>(s.triangles.size());
+    const bool tagged = e < nt ? static_cast<int>(s.triangle_tags.size()) == nt : s.quad_tags.size() == s.quads.size();
+    const long tag = !tagged ? e : e < nt ? s.triangle_tags[e] : s.quad_tags[e - nt];
+    return line(e) > 0 ? fmt::format("element {} (line {})", tag, line(e)) : fmt::format("element {}", tag);
+  }
   long node(int k) const {
     return k >= 0 && static_cast<std::size_t>(k) < m.node_tags.size() ? m.node_tags[k] : k;
   }
@@ -48,6 +55,22 @@ struct ElementView {
     return "[" + out + "]";
   }
 };
+
+/// An element that names a node twice (at positions a < b of `nodes`), and the fix. Two
+/// neighbouring corners are an edge that has collapsed: what a mesh generator leaves where it
+/// merged the two ends of a very short edge.
+std::string repeated_node(const ElementView& ev, int e, const std::vector<int>& nodes, std::size_t a, std::size_t b,
+                          bool corners) {
+  const bool edge = corners && (b == a + 1 || (a == 0 && b + 1 == nodes.size()));
+  return fmt::format("{} has the repeated node {}; its nodes are {}: {}remove {} from the mesh file, or remesh the "
+                     "surface{}",
+                     ev.name(e), ev.node(nodes[a]), ev.list(nodes),
+                     edge ? "an edge of it has collapsed onto one node, so it has no area (a mesh generator leaves "
+                            "this where it merged the two ends of a very short edge, e.g. at a curve of the geometry "
+                            "much shorter than the mesh size); "
+                          : "an element must name each node once; ",
+                     ev.label(e), edge ? " (without the very short curve, or finer there)" : "");
+}
 
 /// The corners of an element in the opposite order, the first kept: [a, b, c] -> [a, c, b].
 std::vector<int> reversed_corners(std::vector<int> v) {
@@ -81,7 +104,7 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
     for (std::size_t a = 0; a < v.size(); ++a)
       for (std::size_t b = a + 1; b < v.size(); ++b)
         if (v[a] == v[b])
-          return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), ev.node(v[a]), ev.list(v));
+          return where + repeated_node(ev, e, v, a, b, true);
   }
 
   // 1b. Quadratic triangles: their mid-edge nodes in range, distinct from the corners and from each other
@@ -107,7 +130,7 @@ std::string check_surface(const SurfaceMesh& mesh, const SurfaceMesh::Surface& s
       for (std::size_t a = 0; a < all.size(); ++a)
         for (std::size_t b = a + 1; b < all.size(); ++b)
           if (all[a] == all[b])
-            return where + fmt::format("{} has the repeated node {}; its nodes are {}", ev.name(e), ev.node(all[a]), ev.list(all));
+            return where + repeated_node(ev, e, all, a, b, false);
       for (int a = 0; a < 3; ++a) {
         if (corner[mid[a]])
           return where + fmt::format("{}: its mid-edge node {} (between nodes {} and {}) is a corner of an element; "

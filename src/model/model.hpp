@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "contact/rigid_surface.hpp"
@@ -282,6 +283,10 @@ struct Model {
   std::vector<std::string> warnings;
   /// What the converged states depend on (io/deck_fingerprint.hpp), in deck order.
   std::vector<FingerprintEntry> fingerprint;
+  /// Where each key of the fingerprint stands in the deck (1-based line and column), and each
+  /// map and list that holds them: a restart refused for a changed key names its line, for a
+  /// removed one the line of the map that held it. Not part of restart.txt.
+  std::map<std::string, std::pair<int, int>> fingerprint_places;
 
   int num_nodes() const { return static_cast<int>(X.size()); }
   int dofs_per_node() const { return geometry == Geometry::axisymmetric ? 2 : 3; }

@@ -15,6 +15,7 @@ long Params::integer(const std::string& name) const { return std::lround(get(nam
 const std::string& Params::text(const std::string& name) const { return get(name).str; }
 bool Params::boolean(const std::string& name) const { return get(name).nums.at(0) != 0.0; }
 const std::vector<double>& Params::numbers(const std::string& name) const { return get(name).nums; }
+const std::string& Params::written(const std::string& name) const { return get(name).written; }
 const SourceLocation& Params::where(const std::string& name) const { return get(name).loc; }
 void Params::fail(const std::string& name, const std::string& what) const {
   throw InputError(has(name) ? where(name) : self_, what);

@@ -17,6 +17,9 @@ public:
   const std::string& text(const std::string& name) const;
   bool boolean(const std::string& name) const;
   const std::vector<double>& numbers(const std::string& name) const;
+  /// A number as written in the deck, with its unit ("0.122 mm"; the default's text if not
+  /// given): for messages that echo a value in the units the user typed.
+  const std::string& written(const std::string& name) const;
   bool has(const std::string& name) const { return values_.count(name) != 0; }
   /// Where the value was given (the component's map if defaulted).
   const SourceLocation& where(const std::string& name) const;
@@ -28,6 +31,7 @@ public:
   struct Value {
     std::vector<double> nums;
     std::string str;
+    std::string written;  ///< a single number's text as written (number and unit)
     SourceLocation loc;
   };
   /// Filled by the reader: the component's own location, then each value given or defaulted.

@@ -34,6 +34,12 @@ void expect_error(const std::string& name, const std::string& from, const std::s
   EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
 }
 
+/// `pattern` with each "{}" replaced by the line of the next of `needles` in `text`.
+std::string fmt_lines(std::string pattern, const std::string& text, const std::vector<std::string>& needles) {
+  for (const std::string& n : needles) pattern.replace(pattern.find("{}"), 2, std::to_string(line_of(text, n)));
+  return pattern;
+}
+
 }  // namespace
 
 TEST(BadInput, TheExampleItselfIsValid) {
@@ -102,8 +108,28 @@ TEST(BadInput, NegativeThickness) {
 }
 
 TEST(BadInput, FungQuadraticFormNotPositiveDefinite) {
-  expect_error("fung-not-convex", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a1", "Fung quadratic form is not positive definite",
-               "    a1: 0.68238");
+  // The message stands at a4, shows the failed condition with the constants as written and
+  // their lines, the bound on a4, and the factor 2 of sources that write a4 E1E2.
+  const std::string deck = replace(read_text(kExample), "a4: 0.1067 ", "a4: 0.9 ");
+  expect_error("fung-not-convex", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a4",
+               "the Fung quadratic form is not positive definite (the two-dimensional approach, a3 = a5 = a6 = 0, "
+               "needs a1 > 0, a2 > 0 and a1·a2 − a4² > 0), so W would not be convex: a1·a2 − a4² = 0.68238 × 0.60558 "
+               "− (0.9)² = -0.3968 ≤ 0",
+               "    a4: 0.9");
+  expect_error("fung-not-convex-values", "a4: 0.1067 ", "a4: 0.9 ", "materials.aorta.a4",
+               fmt_lines("(a1 = 0.68238 (line {}), a2 = 0.60558 (line {}), a4 = 0.9 (line {})): |a4| must be < "
+                         "√(a1·a2) = 0.6428. If your source writes Q with a4 E1E2 rather than 2 a4 E1E2, give half its "
+                         "value: a4: 0.45",
+                         deck, {"a1: 0.68238", "a2: 0.60558", "a4: 0.9"}),
+               "    a4: 0.9");
+  // a1 itself not positive: at a1.
+  expect_error("fung-a1", "a1: 0.68238", "a1: -0.5", "materials.aorta.a1", "a1 = -0.5 ≤ 0 (a1 = -0.5 (line 12)");
+  // The full matrix: its determinant, and the a3 that would do.
+  expect_error("fung-3d", "    a4: 0.1067", "    a4: 0.1067\n    a3: 0.1\n    a5: 0.5\n    a6: 0.4", "materials.aorta.a3",
+               "its determinant is -0.1846 ≤ 0 (a1 = 0.68238 (line 12), a2 = 0.60558 (line 13), a3 = 0.1 (line 15), a4 "
+               "= 0.1067 (line 14), a5 = 0.5 (line 16), a6 = 0.4 (line 17)): with these a1, a2, a4, a5, a6, a3 must be "
+               "> 0.5594",
+               "    a3: 0.1");
 }
 
 TEST(BadInput, NegativeFungConstant) {
@@ -222,6 +248,47 @@ TEST(BadInput, AModulusWithoutAUnitIsValidButSaid) {
       << o.output;
   EXPECT_NE(o.output.find("= 6.116e+04 kPa"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("`61.163 kPa`"), std::string::npos) << o.output;
+}
+
+TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
+  // `beta: 0.7` is 0.7 rad = 40.1°: in range, so valid, but said at its line and key with how
+  // it was read and the fix; so are a meridian arc's and a tube's angles. 0 is the same in
+  // every unit and is not said.
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 0.7\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  Outcome o = run_cli("check " + write_deck("angle-no-unit", deck));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("tunica: warning: " + fs::path(write_deck("angle-no-unit", deck)).string() + ":" +
+                          std::to_string(line_of(deck, "beta: 0.7")) +
+                          ":11: key 'materials.aorta.beta': 0.7 has no unit and is read in radians (0.7 rad = 40.11 "
+                          "deg); write the unit to be sure, e.g. `0.7 rad`, or `0.7 deg` if degrees are meant"),
+            std::string::npos)
+      << o.output;
+  o = run_cli("check " + write_deck("angle-zero", replace(deck, "beta: 0.7", "beta: 0")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_EQ(o.output.find("warning"), std::string::npos) << o.output;
+  const std::string sphere = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  o = run_cli("check " + write_deck("arc-no-unit", replace(sphere, "end_angle: 90 deg", "end_angle: 1.5")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.balloon.mesh.end_angle': 1.5 has no unit and is read in radians (1.5 rad = 85.94 deg)"),
+            std::string::npos)
+      << o.output;
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  o = run_cli("check " + write_deck("sector-no-unit", replace(quarter, "sector: 90 deg", "sector: 1.5707963267948966")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.wall.mesh.sector': 1.5707963267948966 has no unit and is read in radians"), std::string::npos)
+      << o.output;
+}
+
+TEST(BadInput, NoExampleDeckWarns) {
+  // The examples write a unit on every pressure and angle; none of them is warned about.
+  for (const auto& entry : fs::directory_iterator(std::string(TUNICA_SOURCE_DIR) + "/examples")) {
+    if (entry.path().extension() != ".yaml") continue;
+    const Outcome o = run_cli("check --allow-scripts " + entry.path().string());
+    EXPECT_EQ(o.exit_code, 0) << entry.path() << ": " << o.output;
+    EXPECT_EQ(o.output.find("warning"), std::string::npos) << entry.path() << ": " << o.output;
+  }
 }
 
 TEST(BadInput, APressureGivenToABoundaryNamesTheLoads) {

@@ -133,6 +133,14 @@ TEST(MessageClasses, AnglePlainNumberSuggestsDegrees) {
   EXPECT_SAYS(o, "for degrees write `40 deg`");
 }
 
+TEST(MessageClasses, FungConstantsWithoutAConvexEnergyShowTheFailedConditionAndTheBound) {
+  const std::string deck = replace(read_text(kExample), "a4: 0.1067 ", "a4: 0.9 ");
+  const Outcome o = expect_deck_message("fung", "a4: 0.1067 ", "a4: 0.9 ", "a4: 0.9", "materials.aorta.a4",
+                                        "a1·a2 − a4² = 0.68238 × 0.60558 − (0.9)² = -0.3968 ≤ 0",
+                                        "|a4| must be < √(a1·a2) = 0.6428");
+  EXPECT_SAYS(o, "a4 = 0.9 (line " + std::to_string(line_of(deck, "a4: 0.9")) + ")");
+}
+
 // ---------------------------------------------------------------- types and names
 
 TEST(MessageClasses, UnknownMaterialTypeListsTheTypes) {
@@ -208,6 +216,34 @@ TEST(MessageClasses, MissingMeshFileGivesThePathAsResolvedAndTheNearestName) {
   EXPECT_SAYS(o, "did you mean 'square.msh'?");
 }
 
+TEST(MessageClasses, MissingMeshFileProposesOnlyACloseNameElseListsTheMeshFiles) {
+  // `a.msh` is not a typo of `b.msh`, nor `tube_1mm.msh` of `tube_2mm.msh`: no "did you mean";
+  // the folder's mesh files are listed instead (not the deck). `wall.msh` for the script
+  // `wall.geo` is proposed.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "missing-mesh-far";
+  fs::create_directories(dir);
+  std::ofstream(dir / "b.msh") << square_msh();
+  std::ofstream(dir / "tube_2mm.msh") << square_msh();
+  std::ofstream(dir / "wall.geo") << "// a script\n";
+  const auto check = [&](const std::string& file) {
+    std::ofstream(dir / "deck.yaml") << replace(kMeshDeck, "file: square.msh", "file: " + file);
+    const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_SAYS(o, (dir / "deck.yaml").string() + ":" + std::to_string(line_of(kMeshDeck, "mesh:")) + ":");
+    EXPECT_SAYS(o, "no such mesh file: " + (dir / file).string());
+    return o;
+  };
+  for (const std::string file : {"a.msh", "tube_1mm.msh"}) {
+    const Outcome o = check(file);
+    EXPECT_EQ(o.output.find("did you mean"), std::string::npos) << o.output;
+    EXPECT_SAYS(o, "; the mesh files in that folder are: b.msh, tube_2mm.msh, wall.geo");
+  }
+  EXPECT_SAYS(check("wall.msh"), "; did you mean 'wall.geo'?");
+  // Many mesh files: counted, not listed.
+  for (int k = 0; k < 9; ++k) std::ofstream(dir / ("part" + std::to_string(k) + ".msh")) << square_msh();
+  EXPECT_SAYS(check("a.msh"), "; that folder holds 12 mesh files, none with a near name");
+}
+
 TEST(MessageClasses, SurfaceFormatsAsMeshSayHowToMakeANamedSurface) {
   for (const std::string ext : {"stl", "vtk", "vtp", "obj", "ply"}) {
     const MeshCase c = check_mesh("surface-" + ext, "solid wall\n", "wall." + ext);
@@ -226,6 +262,18 @@ TEST(MessageClasses, DegenerateElementIsNamedByItsTagAndLineInTheMeshFile) {
                        std::to_string(line_of(mesh, "17 2 2 1 1")) + ") is degenerate");
   EXPECT_SAYS(c.o, "its nodes are [11, 12, 15]");
   EXPECT_SAYS(c.o, "remove it or move its nodes apart");
+}
+
+TEST(MessageClasses, RepeatedNodeIsNamedByItsTagAndLineWithTheFix) {
+  // Element 17 names node 11 twice: a collapsed edge, to remove or remesh.
+  const std::string mesh = square_msh("17 2 2 1 1 11 12 11\n", 1);
+  const MeshCase c = check_mesh("repeated-node", mesh);
+  const std::string line = std::to_string(line_of(mesh, "17 2 2 1 1"));
+  EXPECT_SAYS(c.o, c.deck.string() + ":" + std::to_string(line_of(kMeshDeck, "mesh:")) + ":");
+  EXPECT_SAYS(c.o, c.mesh.string() + ": surface 'wall': element 17 (a triangle, line " + line +
+                       ") has the repeated node 11; its nodes are [11, 12, 11]");
+  EXPECT_SAYS(c.o, "an edge of it has collapsed onto one node");
+  EXPECT_SAYS(c.o, "remove element 17 (line " + line + ") from the mesh file, or remesh the surface");
 }
 
 TEST(MessageClasses, InvertedElementIsNamedByItsTagAndLineWithTheReversedOrder) {

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "../support/capture.hpp"
@@ -25,6 +26,13 @@ Outcome tunica_cli(const std::string& args, const fs::path& log) {
   const int status =
       std::system((std::string(TUNICA_BINARY) + " " + args + " > " + log.string() + " 2>&1").c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log.string())};
+}
+
+/// 1-based line of the first occurrence of `needle` in `text`.
+int line_in(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  EXPECT_NE(pos, std::string::npos) << needle;
+  return pos == std::string::npos ? 0 : 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
 }
 
 const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
@@ -62,12 +70,39 @@ protected:
 }  // namespace
 
 TEST_F(RestartFingerprint, AChangedMaterialIsRefusedWithItsKeyAndValues) {
-  const Outcome o = restart("material.yaml", replace(original_, "a1: 0.68238", "a1: 0.7"));
+  const std::string changed = replace(original_, "a1: 0.68238", "a1: 0.7");
+  const Outcome o = restart("material.yaml", changed);
   EXPECT_EQ(o.code, 2) << o.output;
-  EXPECT_NE(o.output.find("material.yaml"), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find("materials.aorta.a1 (was '0.68238', now '0.7')"), std::string::npos) << o.output;
+  // The deck, the line and column of the changed value (as other deck errors), and the key
+  // with its line in the list.
+  const std::string line = std::to_string(line_in(changed, "a1: 0.7"));
+  EXPECT_NE(o.output.find((dir_ / "material.yaml").string() + ":" + line + ":9: the deck differs"), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("line " + line + ": materials.aorta.a1 (was '0.68238', now '0.7')"), std::string::npos)
+      << o.output;
   // Nothing of the run was touched: it still restarts with the deck it had.
   EXPECT_EQ(restart("unchanged.yaml", original_).code, 0);
+}
+
+TEST_F(RestartFingerprint, EachChangedKeyIsListedWithItsDeckLine) {
+  // Two changes: the message stands at the first; a key no longer given is placed at the map
+  // that held it.
+  const std::string changed =
+      replace(replace(original_, "c: 61.163 kPa", "c: 0.061163 MPa"), "    - {quantity: E_2, part: wall, name: E_z}",
+              "    - {quantity: E_2, part: wall}");
+  const Outcome o = restart("two.yaml", changed);
+  EXPECT_EQ(o.code, 2) << o.output;
+  const std::string c_line = std::to_string(line_in(changed, "c: 0.061163 MPa"));
+  const std::string e2_line = std::to_string(line_in(changed, "{quantity: E_2"));
+  EXPECT_NE(o.output.find((dir_ / "two.yaml").string() + ":" + c_line + ":8: the deck differs"), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("(2 keys in"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("line " + c_line + ": materials.aorta.c (was '61.163 kPa', now '0.061163 MPa')"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("line " + e2_line + " ('output.history[3]'): output.history[3].name (was 'E_z', now not given)"),
+            std::string::npos)
+      << o.output;
 }
 
 TEST_F(RestartFingerprint, AConvergedStepsTargetAndTheMeshAreRefused) {
@@ -81,7 +116,10 @@ TEST_F(RestartFingerprint, AConvergedStepsTargetAndTheMeshAreRefused) {
   EXPECT_NE(o.output.find("parts.wall (its mesh: node positions and elements)"), std::string::npos) << o.output;
   o = restart("added.yaml", replace(original_, "    a4: 0.1067", "    a4: 0.1067\n    a3: 0"));
   EXPECT_EQ(o.code, 2) << o.output;
-  EXPECT_NE(o.output.find("materials.aorta.a3 (not given before, now '0')"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("line " + std::to_string(line_in(original_, "    a4: 0.1067") + 1) +
+                          ": materials.aorta.a3 (not given before, now '0')"),
+            std::string::npos)
+      << o.output;
 }
 
 TEST_F(RestartFingerprint, SolverSettingsAndStepsNotReachedMayChange) {

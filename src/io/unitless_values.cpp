@@ -1,0 +1,48 @@
+#include "io/unitless_values.hpp"
+
+#include <fmt/format.h>
+
+#include <numbers>
+
+namespace tunica {
+
+bool warn_if_unitless(const DeckNode& v, Dimension dim, Model& m, bool load_target) {
+  if (dim != Dimension::pressure && dim != Dimension::angle) return false;
+  double written = 0;
+  std::string unit;
+  if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || !unit.empty() || written == 0) return false;
+  const std::string& w = v.as_string();
+  if (dim == Dimension::angle) {
+    m.warnings.push_back(format_location(
+        v.where(), fmt::format("{} has no unit and is read in radians ({} rad = {:.4g} deg); write the unit to be sure, "
+                               "e.g. `{} rad`, or `{} deg` if degrees are meant",
+                               w, w, written * 180 / std::numbers::pi, w, w)));
+    return true;
+  }
+  const double p = m.units.to_internal(written, "", Dimension::pressure);
+  const std::string deck_unit = m.units.display_unit(Dimension::pressure);
+  const double kpa = m.units.from_internal(p, "kPa", Dimension::pressure);
+  m.warnings.push_back(format_location(
+      v.where(), load_target ? fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = "
+                                           "{:.4g} mmHg); write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
+                                           w, deck_unit, kpa, m.units.from_internal(p, "mmHg", Dimension::pressure), w, w)
+                             : fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa); "
+                                           "write the unit to be sure, e.g. `{} kPa` or `{} MPa`",
+                                           w, deck_unit, kpa, w, w)));
+  return true;
+}
+
+void warn_unitless_values(const DeckNode& node, const ComponentSpec& spec, Model& m) {
+  for (const ParamSpec& p : spec.params) {
+    if ((p.dim != Dimension::pressure && p.dim != Dimension::angle) || !node.has(p.name)) continue;
+    const DeckNode given = node[p.name];
+    if (given.is_sequence()) {
+      for (const DeckNode& v : given.items())
+        if (warn_if_unitless(v, p.dim, m)) break;
+    } else {
+      warn_if_unitless(given, p.dim, m);
+    }
+  }
+}
+
+}  // namespace tunica
