@@ -9,7 +9,9 @@ lambda = 1.2. Every run is scored by the same raw error against that closed form
     lambda reached = mean radius of all nodes of the deformed mid-surface
 
 (CalculiX: all shell nodes of the last *NODE PRINT U block; Tunica: all nodes of the last VTK
-frame, the mid-edge nodes of 6-node triangles included).
+frame, the mid-edge nodes of 6-node triangles included). The mean can hide a lumpy shape, so a
+second, pointwise score is kept too: the worst node, the same error with lambda = r_i / R at the
+node where it is largest in magnitude; the equal-accuracy table is printed for both.
 
 1. CalculiX S4 (sphere_ccx.py's deck: exact *NORMALs, NEO HOOKE with nu = 0.4999, moduli scaled by
    1e6, tight tolerances R_n = 1e-6, C_n = 1e-5) on the octants n = 41 and n = 58 (5,043 and
@@ -20,8 +22,8 @@ frame, the mid-edge nodes of 6-node triangles included).
    ladder of meshes and increments: 4-node quads (the `octant` generator) and 6-node triangles
    (tunica-bench sphere --element tri6 --write-deck, mid-edge nodes on the exact sphere), each the
    best CPU time of --repeats runs (default 3).
-3. For each CalculiX run: the cheapest Tunica run with |err| <= |CalculiX's err|, and the ratio of
-   CPU times.
+3. For each CalculiX mesh (its faster variant): the cheapest Tunica run with |err| <= |CalculiX's
+   err|, and the ratio of CPU times; then the same with the worst-node errors.
 
 CPU time = user + system time of the whole child process (os.wait4), start-up, mesh reading and
 output included, for both codes. `uptime` is recorded before each CalculiX run and before and after
@@ -112,11 +114,13 @@ def run_ccx(out, n, incs, nu, timeout):
     r = sphere_ccx.read_results(d, job, X, mu, p, pole)
     ok = not killed and rc == 0 and r["status"] == "completed"
     row = dict(code="ccx", element="S4", n=n, elements=len(E), nodes=len(X), requested_incs=incs, incs=r["incs"],
-               iters=r["iters"], cpu=cpu, wall=wall, rss_mb=rss, lam=r["lam"], err=r["err"],
+               iters=r["iters"], cpu=cpu, wall=wall, rss_mb=rss, lam=r["lam"], err=r["err"], err_worst=r["err_worst"],
+               spread=r["spread"],
                status="completed" if ok else ("killed after timeout" if killed else f"failed (exit {rc}, {r['status']})"),
                uptime=load, dir=d)
     print(f"      CPU {cpu:.1f} s (wall {wall:.1f} s), {r['incs']} increments, {r['iters']} iterations, "
-          f"lambda {r['lam']:.8f}, p error {r['err']:+.3e}, {row['status']}", flush=True)
+          f"lambda {r['lam']:.8f}, p error {r['err']:+.3e} (worst node {r['err_worst']:+.3e}), {row['status']}",
+          flush=True)
     return row
 
 
@@ -151,10 +155,9 @@ def vtu_points(path):
     return list(struct.unpack("<%d%s" % (len(raw) // size, fmt), raw))
 
 
-def mean_radius(path):
+def radii(path):
     v = vtu_points(path)
-    r = [(v[i] ** 2 + v[i + 1] ** 2 + v[i + 2] ** 2) ** 0.5 for i in range(0, len(v), 3)]
-    return sum(r) / len(r), len(r)
+    return [(v[i] ** 2 + v[i + 1] ** 2 + v[i + 2] ** 2) ** 0.5 for i in range(0, len(v), 3)]
 
 
 def tunica_case(out, bench, element, lattice, n, incs):
@@ -190,15 +193,17 @@ def run_tunica(out, tunica, bench, element, lattice, n, incs, repeats):
         t = float(last[header.index("time")])
         with open(os.path.join(o, "newton.csv")) as f:  # corrections = linear solves, failed attempts included
             iters = sum(1 for r in csv.DictReader(f) if int(r["iteration"]) > 0)
-        lam, nodes = mean_radius(frames[-1])
-        lam /= R
+        r = radii(frames[-1])
+        nodes, lam = len(r), sum(r) / len(r) / R
         err = (p - p_closed(lam)) / p_closed(lam)
+        err_worst = max((p / p_closed(ri / R) - 1.0 for ri in r), key=abs)
         errs.add(f"{err:.6e}")
         cpus.append(round(cpu, 3))
         ok = rc == 0 and abs(t - 1.0) < 1e-12
         row = dict(code="tunica", element=element, lattice=lattice if element != "quad4" else "cube", n=n,
                    elements=sizes.get("elements"), nodes=nodes, unknowns=sizes.get("unknowns"), incs=incs,
-                   iters=iters, cpu=cpu, wall=wall, rss_mb=rss, lam=lam, err=err,
+                   iters=iters, cpu=cpu, wall=wall, rss_mb=rss, lam=lam, err=err, err_worst=err_worst,
+                   spread=(max(r) - min(r)) / R,
                    status="completed" if ok else f"failed (exit {rc}, time {t})", dir=d)
         if best is None or (row["status"] == "completed" and row["cpu"] < best["cpu"]):
             best = row
@@ -228,14 +233,13 @@ def label(t):
     return "quad4" if t["element"] == "quad4" else f"{t['element']} ({t['lattice']})"
 
 
-def tables(ccx_rows, tun_rows, reused):
-    lines = []
-    w = lines.append
-    w("Equal accuracy: for each CalculiX run, the cheapest Tunica run (CPU time, best of the repeats) with "
-      "|p error| <= CalculiX's" + (" (CalculiX results reused from an earlier run: --reuse-ccx)" if reused else ""))
+def equal_accuracy_table(w, ccx_rows, tun_rows, key, what):
+    """For each CalculiX mesh (its fastest completed run) the cheapest Tunica run with |key| no larger."""
+    w(f"Equal accuracy, {what}: for each CalculiX mesh (the faster of its runs), the cheapest Tunica run "
+      f"(CPU time, best of the repeats) with an error no larger in magnitude")
     w("")
-    w("| CalculiX S4: octant n (elements) | increments (iterations) | CPU s | raw p error | Tunica: element | n | "
-      "elements | unknowns | increments (iterations) | CPU s | raw p error | ratio |")
+    w("| CalculiX S4: octant n (elements) | increments (iterations) | CPU s | p error | Tunica: element | n | "
+      "elements | unknowns | increments (iterations) | CPU s | p error | ratio |")
     w("|---|---|---|---|---|---|---|---|---|---|---|---|")
     done = [t for t in tun_rows if t["status"] == "completed"]
     by_n = {}
@@ -245,17 +249,17 @@ def tables(ccx_rows, tun_rows, reused):
     summary = []
     for n in sorted(by_n):
         c = by_n[n]
-        ok = [t for t in done if abs(t["err"]) <= abs(c["err"])]
+        ok = [t for t in done if abs(t[key]) <= abs(c[key])]
         inc = f"{c['incs']} ({c['iters']})" + (" auto" if c["requested_incs"] == 1 else "")
         if not ok:
-            w(f"| {n} ({c['elements']:,}) | {inc} | {c['cpu']:.1f} | {c['err']:+.2e} | none of the ladder reaches it | "
+            w(f"| {n} ({c['elements']:,}) | {inc} | {c['cpu']:.1f} | {c[key]:+.2e} | none of the ladder reaches it | "
               "| | | | | | |")
             continue
         t = min(ok, key=lambda r: r["cpu"])
         ratio = c["cpu"] / t["cpu"]
-        summary.append((n, c, t, ratio))
-        w(f"| {n} ({c['elements']:,}) | {inc} | {c['cpu']:.1f} | {c['err']:+.2e} | {label(t)} | {t['n']} | "
-          f"{t['elements']:,} | {t['unknowns']:,} | {t['incs']} ({t['iters']}) | {t['cpu']:.3f} | {t['err']:+.2e} | "
+        summary.append((key, n, c, t, ratio))
+        w(f"| {n} ({c['elements']:,}) | {inc} | {c['cpu']:.1f} | {c[key]:+.2e} | {label(t)} | {t['n']} | "
+          f"{t['elements']:,} | {t['unknowns']:,} | {t['incs']} ({t['iters']}) | {t['cpu']:.3f} | {t[key]:+.2e} | "
           f"**{ratio:.0f}×** |")
         # The cheapest of each element family too, and whether every finer mesh of that family (same increments)
         # also reaches the level (a coarse mesh can land near the closed form by a cancellation).
@@ -265,30 +269,41 @@ def tables(ccx_rows, tun_rows, reused):
                 continue
             f = min(fam_ok, key=lambda r: r["cpu"])
             finer = [r for r in done if (r["element"], r["lattice"]) == fam and r["incs"] == f["incs"] and r["n"] > f["n"]]
-            steady = all(abs(r["err"]) <= abs(c["err"]) for r in finer)
+            steady = all(abs(r[key]) <= abs(c[key]) for r in finer)
             w(f"|   ↳ cheapest {label(f)} | | | | {label(f)} | {f['n']} | {f['elements']:,} | {f['unknowns']:,} | "
-              f"{f['incs']} ({f['iters']}) | {f['cpu']:.3f} | {f['err']:+.2e} | {c['cpu'] / f['cpu']:.0f}×"
+              f"{f['incs']} ({f['iters']}) | {f['cpu']:.3f} | {f[key]:+.2e} | {c['cpu'] / f['cpu']:.0f}×"
               f"{'' if steady else ' (a finer mesh of the ladder misses the level)'} |")
+    w("")
+    return summary
+
+
+def tables(ccx_rows, tun_rows, reused):
+    lines = []
+    w = lines.append
+    if reused:
+        w("(CalculiX results reused from an earlier run: --reuse-ccx)")
+        w("")
+    summary = equal_accuracy_table(w, ccx_rows, tun_rows, "err", "raw p error at the mean nodal radius")
+    summary += equal_accuracy_table(w, ccx_rows, tun_rows, "err_worst", "p error at the worst node")
     for c in ccx_rows:
         if c["status"] != "completed":
             w(f"| {c['n']} ({c['elements']:,}), {c['requested_incs']} incr. | {c['status']} | | | | | | | | | | |")
-    w("")
     w("CalculiX runs (S4, nu = 0.4999, tight tolerances, one thread, once each):")
     w("")
-    w("| n | elements | increments requested | increments (iterations) | CPU s | wall s | peak RSS MB | lambda | raw p error | uptime before |")
-    w("|---|---|---|---|---|---|---|---|---|---|")
+    w("| n | elements | increments requested | increments (iterations) | CPU s | wall s | peak RSS MB | lambda | raw p error | worst node | uptime before |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|")
     for c in ccx_rows:
         req = "auto from 1" if c["requested_incs"] == 1 else str(c["requested_incs"])
         w(f"| {c['n']} | {c['elements']:,} | {req} | {c['incs']} ({c['iters']}) | {c['cpu']:.1f} | {c['wall']:.1f} | "
-          f"{c['rss_mb']:.0f} | {c['lam']:.8f} | {c['err']:+.3e} | {c['uptime']} |")
+          f"{c['rss_mb']:.0f} | {c['lam']:.8f} | {c['err']:+.3e} | {c['err_worst']:+.3e} | {c['uptime']} |")
     w("")
     w("Tunica runs (one thread, CPU time the best of the repeats; accuracy per unknown):")
     w("")
-    w("| element | n | elements | nodes | unknowns | increments (iterations) | CPU s | wall s | peak RSS MB | lambda | raw p error |")
-    w("|---|---|---|---|---|---|---|---|---|---|---|")
+    w("| element | n | elements | nodes | unknowns | increments (iterations) | CPU s | wall s | peak RSS MB | lambda | raw p error | worst node |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for t in sorted(tun_rows, key=lambda r: (r["element"], r["lattice"], r["incs"], r["n"])):
         w(f"| {label(t)} | {t['n']} | {t['elements']:,} | {t['nodes']:,} | {t['unknowns']:,} | {t['incs']} ({t['iters']}) | "
-          f"{t['cpu']:.3f} | {t['wall']:.3f} | {t['rss_mb']:.0f} | {t['lam']:.8f} | {t['err']:+.3e}"
+          f"{t['cpu']:.3f} | {t['wall']:.3f} | {t['rss_mb']:.0f} | {t['lam']:.8f} | {t['err']:+.3e} | {t['err_worst']:+.3e}"
           f"{'' if t['status'] == 'completed' else ' ' + t['status']} |")
     return "\n".join(lines), summary
 
@@ -332,7 +347,8 @@ def main():
         r = run_tunica(a.out, a.tunica, a.bench, element, lattice, n, incs, a.repeats)
         tun_rows.append(r)
         print(f"      {label(r)} n={n} incs={incs}: {r['elements']} elements, {r['unknowns']} unknowns, "
-              f"CPU {r['cpu']:.3f} s, {r['iters']} iterations, p error {r['err']:+.3e} {r['status']}", flush=True)
+              f"CPU {r['cpu']:.3f} s, {r['iters']} iterations, p error {r['err']:+.3e} (worst node {r['err_worst']:+.3e}) "
+              f"{r['status']}", flush=True)
     load_after = uptime()
     json.dump(tun_rows, open(os.path.join(a.out, "tunica.json"), "w"), indent=1)
     text, summary = tables(ccx_rows, tun_rows, a.reuse_ccx)
@@ -343,10 +359,10 @@ def main():
     print()
     print(head)
     print(text)
-    for n, c, t, ratio in summary:
-        print(f"RESULT ccx_n={n} ccx_cpu={c['cpu']:.1f} ccx_err={c['err']:+.3e} tunica={t['element']}/{t['lattice']} "
-              f"tunica_n={t['n']} tunica_incs={t['incs']} tunica_cpu={t['cpu']:.3f} tunica_err={t['err']:+.3e} "
-              f"ratio={ratio:.1f}")
+    for key, n, c, t, ratio in summary:
+        print(f"RESULT measure={key} ccx_n={n} ccx_cpu={c['cpu']:.1f} ccx_err={c[key]:+.3e} "
+              f"tunica={t['element']}/{t['lattice']} tunica_n={t['n']} tunica_incs={t['incs']} tunica_cpu={t['cpu']:.3f} "
+              f"tunica_err={t[key]:+.3e} ratio={ratio:.1f}")
 
 
 if __name__ == "__main__":

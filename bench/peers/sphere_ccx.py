@@ -175,7 +175,8 @@ def read_results(d, job, X, mu, p, pole):
 
     .sta: converged increments; .cvg: one line per Newton iteration (failed attempts included).
     lambda = mean radius of all shell nodes (the mid-surface) from the last *NODE PRINT U block;
-    err = (p applied - p_closed(lambda)) / p_closed(lambda), p applied = p x step time.
+    err = (p applied - p_closed(lambda)) / p_closed(lambda), p applied = p x step time;
+    err_worst = the same at the one node whose radius gives the largest |error| (lambda = r_i / R).
     """
     incs = atts = 0  # converged increments; attempts that did not converge (ATT "1U": cut back)
     sta_iters = 0
@@ -206,10 +207,11 @@ def read_results(d, job, X, mu, p, pole):
         p_reached = p * t
         err = (p_reached - p_closed(lam_mean, mu)) / p_closed(lam_mean, mu)
         spread = (max(r) - min(r)) / R
+        err_worst = max((p_reached / p_closed(ri / R, mu) - 1.0 for ri in r), key=abs)
     else:
-        lam_mean = lam_pole = p_reached = err = spread = float("nan")
+        lam_mean = lam_pole = p_reached = err = spread = err_worst = float("nan")
     return dict(incs=incs, attempts=atts, iters=iters, sta_iters=sta_iters, t=t, status=status, lam=lam_mean,
-                lam_pole=lam_pole, p_reached=p_reached, err=err, spread=spread)
+                lam_pole=lam_pole, p_reached=p_reached, err=err, spread=spread, err_worst=err_worst)
 
 
 def ccx_env():
