@@ -3,7 +3,8 @@
 // closed form it prints for the sphere.
 //
 //   tunica-bench tube   --triangles N [--increments 6] [--prestretch-increments 4]
-//   tunica-bench sphere --n N        [--increments 10]
+//   tunica-bench sphere --n N        [--increments 10] [--element quad4|tri3|tri6] [--lattice cube|octahedron]
+//                                    [--write-deck DIR]
 //   common: [--solver auto|cholmod|umfpack|sparse_lu] [--symmetrized] [--threads T] [--csv FILE] [--paired]
 //           [--residual-tolerance R] [--energy-tolerance E]   (Newton tests; deck defaults 1e-9, 1e-12)
 //
@@ -14,7 +15,16 @@
 //         40 mmHg in 4 increments (an in-vivo-like prestretch keeps the wall in tension), then
 //         inflated to 120 mmHg in 6 increments (--prestretch-increments, --increments).
 // sphere: the thin neo-Hookean sphere octant of theory manual (8.3) (R = 1 mm, H = 0.01 mm,
-//         μ = 1 MPa), n × n quads per patch, pressure to the closed-form value at λ = 1.2.
+//         μ = 1 MPa), pressure to the closed-form value at λ = 1.2. --element quad4 (default): the
+//         deck's octant generator, n × n quads per patch (3n²); tri3 / tri6: 3-node / 6-node
+//         triangles written as a Gmsh 2.2 file, mid-edge nodes on the exact sphere, on the
+//         --lattice cube (the same patches, each quad split in two: 6n²; default) or octahedron
+//         (the face x + y + z = R projected: n²) (tests/support/sphere_octant.hpp). The error
+//         printed is p's against the closed form at the mean radius of all nodes (mid-edge nodes
+//         included), the measure of bench/peers/ for every code.
+//         --write-deck DIR writes DIR/sphere.yaml (and DIR/octant.msh) for `tunica run` and exits:
+//         one VTK frame of the reference state and one of the last increment (raw binary), the
+//         applied pressure in history.csv (bench/peers/equal_accuracy.py).
 //
 // Per run it prints the mean time per Newton iteration split into assembly,
 // numeric factorization and solve, the iterations per increment, the peak
@@ -24,12 +34,14 @@
 #include <fmt/format.h>
 #include <omp.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -57,6 +69,9 @@ struct Options {
   int n = 41;
   int increments = 0;
   int prestretch_increments = 4;  // tube: the prestretch step's
+  std::string element = "quad4";
+  std::string lattice = "cube";
+  std::string write_deck;
   std::string solver = "auto";
   bool symmetrized = false;
   double residual_tolerance = 1e-9;  // the deck defaults
@@ -79,9 +94,27 @@ std::string tube_deck(const Options& o, int& around) {
                                       o.prestretch_increments);
 }
 
-std::string sphere_deck(const Options& o) {
-  return tunica::test::sphere_octant_deck(fmt::format("bench neo-Hookean sphere octant n = {}", o.n), o.n,
-                                          solver_block(o), o.increments > 0 ? o.increments : 10);
+/// The sphere octant's deck; a triangle mesh is written to `dir`/octant.msh (the deck names it by
+/// its path relative to the deck when `relative`, else by its absolute path).
+std::string sphere_deck(const Options& o, const std::filesystem::path& dir, bool relative, const std::string& output) {
+  namespace t = tunica::test;
+  t::OctantMesh mesh;
+  if (o.element == "quad4") {
+    mesh = t::octant_generator_mesh(o.n);
+  } else {
+    const std::filesystem::path msh = dir / "octant.msh";
+    mesh = t::octant_msh_mesh(msh.string(), relative ? std::string("octant.msh") : std::filesystem::absolute(msh).string(),
+                              o.n, o.element == "tri6" ? 2 : 1, t::octant_lattice(o.lattice));
+  }
+  const std::string title = fmt::format("bench neo-Hookean sphere octant, {} n = {}{}", o.element, o.n,
+                                        o.element == "quad4" ? "" : " (" + o.lattice + " lattice)");
+  return t::sphere_octant_deck(title, mesh, solver_block(o), o.increments > 0 ? o.increments : 10, output);
+}
+
+std::string size_label(const Options& o, int around) {
+  if (o.problem == "tube") return fmt::format("{}x{}", around, around);
+  if (o.element == "quad4") return fmt::format("n={}", o.n);
+  return fmt::format("{}-{}-n={}", o.element, o.lattice, o.n);
 }
 
 /// --paired: the bare factorizations timed next to the run's own. After each successful
@@ -152,7 +185,12 @@ struct Recorder : tunica::AnalysisObserver {
 int run(const Options& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
   int around = 0;
-  const std::string deck = o.problem == "tube" ? tube_deck(o, around) : sphere_deck(o);
+  std::filesystem::path scratch;
+  if (o.problem == "sphere" && o.element != "quad4") {
+    scratch = std::filesystem::temp_directory_path() / fmt::format("tunica-bench-{}", ::getpid());
+    std::filesystem::create_directories(scratch);
+  }
+  const std::string deck = o.problem == "tube" ? tube_deck(o, around) : sphere_deck(o, scratch, false, "{vtk: false}");
   const double t_start = now();
   const tunica::Model model = tunica::read_deck_text(deck, o.problem + ".yaml");
   tunica::Analysis analysis(model);
@@ -247,11 +285,10 @@ int run(const Options& o) {
   std::string accuracy = "-";
   if (o.problem == "sphere") {
     // Mean nodal radius against the closed form: error of p at the λ reached.
-    double r = 0;
-    for (int n = 0; n < model.num_nodes(); ++n) r += (model.X[n] + analysis.displacement().segment<3>(3 * n)).norm();
-    const double l = r / model.num_nodes();
-    const double p_closed = 2.0 * 0.01 * (1.0 / l - std::pow(l, -7));
-    accuracy = fmt::format("{:+.3e}", tunica::test::sphere_octant_pressure() / p_closed - 1.0);
+    const Eigen::VectorXd& u = analysis.displacement();
+    accuracy = fmt::format("{:+.3e}", tunica::test::sphere_octant_p_error(model.num_nodes(), [&](int n) {
+                             return Eigen::Vector3d(model.X[n] + u.segment<3>(3 * n));
+                           }));
   } else {
     // Mean nodal radius against the thin-tube closed form (theory manual (8.1)) at 120 mmHg and λz = 1.3:
     // the error of the hoop stretch λθ = r/R reached.
@@ -263,7 +300,8 @@ int run(const Options& o) {
     const double closed = tunica::hoop_stretch_at_pressure(*model.materials.at("aorta"), g, p, 1.3);
     accuracy = fmt::format("{:+.3e}", r / model.num_nodes() / g.R / closed - 1.0);
   }
-  const std::string size = o.problem == "tube" ? fmt::format("{}x{}", around, around) : fmt::format("n={}", o.n);
+  if (!scratch.empty()) std::filesystem::remove_all(scratch);
+  const std::string size = size_label(o, around);
   std::printf("%-7s %-9s elements %ld  nodes %d  unknowns %d  nonzeros %ld  threads %d  solver %s%s\n", o.problem.c_str(),
               size.c_str(), elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
               omp_get_max_threads(), used.c_str(), o.symmetrized ? " (symmetrized)" : "");
@@ -323,7 +361,13 @@ int main(int argc, char** argv) {
   Options o;
   app.add_option("problem", o.problem, "tube or sphere")->required()->check(CLI::IsMember({"tube", "sphere"}));
   app.add_option("--triangles", o.triangles, "tube: about this many triangles")->check(CLI::Range(100L, 100000000L));
-  app.add_option("--n", o.n, "sphere: octant patches of n × n quads")->check(CLI::Range(2, 10000));
+  app.add_option("--n", o.n, "sphere: elements per patch edge (quad4: 3n² quads; tri on the cube lattice: 6n², octahedron: n²)")
+      ->check(CLI::Range(1, 10000));
+  app.add_option("--element", o.element, "sphere: quad4 (the octant generator), tri3 or tri6 (a Gmsh file)")
+      ->check(CLI::IsMember({"quad4", "tri3", "tri6"}));
+  app.add_option("--lattice", o.lattice, "sphere, tri3/tri6: the cube-projection patches or the octahedron face")
+      ->check(CLI::IsMember({"cube", "octahedron"}));
+  app.add_option("--write-deck", o.write_deck, "sphere: write DIR/sphere.yaml (and octant.msh) for `tunica run`, and exit");
   app.add_option("--increments", o.increments, "load increments (tube: of the inflation, 6; sphere 10)")
       ->check(CLI::Range(1, 1000));
   app.add_option("--prestretch-increments", o.prestretch_increments, "tube: increments of the prestretch step")
@@ -340,6 +384,23 @@ int main(int argc, char** argv) {
   app.add_option("--csv", o.csv, "append a row to this CSV file");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (!o.write_deck.empty()) {
+      if (o.problem != "sphere") throw std::invalid_argument("--write-deck: sphere only");
+      const std::filesystem::path dir(o.write_deck);
+      std::filesystem::create_directories(dir);
+      const std::string deck = sphere_deck(
+          o, dir, true,
+          "\n  vtk_format: binary\n  vtk_every: 1000000\n  history:\n    - {quantity: pressure, load: inflation}");
+      std::ofstream(dir / "sphere.yaml") << deck;
+      const tunica::Model model = tunica::read_deck_text(deck, (dir / "sphere.yaml").string());
+      const tunica::Analysis analysis(model);
+      long elements = 0;
+      for (const auto& part : model.parts)
+        for (const auto& b : part.blocks) elements += b.size();
+      std::printf("%s: elements %ld nodes %d unknowns %d\n", (dir / "sphere.yaml").string().c_str(), elements,
+                  model.num_nodes(), analysis.system().num_free());
+      return 0;
+    }
     return run(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tunica-bench: %s\n", e.what());

@@ -170,6 +170,56 @@ def parse_dat(path, X):
     return t, U
 
 
+def read_results(d, job, X, mu, p, pole):
+    """What a finished ccx run in d reached: increments, iterations, step time, lambda and the p error.
+
+    .sta: converged increments; .cvg: one line per Newton iteration (failed attempts included).
+    lambda = mean radius of all shell nodes (the mid-surface) from the last *NODE PRINT U block;
+    err = (p applied - p_closed(lambda)) / p_closed(lambda), p applied = p x step time;
+    err_worst = the same at the one node whose radius gives the largest |error| (lambda = r_i / R).
+    """
+    incs = atts = 0  # converged increments; attempts that did not converge (ATT "1U": cut back)
+    sta_iters = 0
+    sta = os.path.join(d, job + ".sta")
+    if os.path.exists(sta):
+        for line in open(sta):
+            f = line.split()
+            if len(f) >= 7 and f[0].isdigit() and f[1].isdigit():
+                if f[2].endswith("U"):
+                    atts += 1
+                else:
+                    incs += 1
+                    sta_iters += int(f[3])
+    iters = 0
+    cvg = os.path.join(d, job + ".cvg")
+    if os.path.exists(cvg):
+        for line in open(cvg):
+            f = line.split()
+            if len(f) >= 7 and all(x.isdigit() for x in f[:4]):
+                iters += 1
+    dat = os.path.join(d, job + ".dat")
+    t, U = parse_dat(dat, X) if os.path.exists(dat) else (None, None)
+    status = "completed" if t is not None and abs(t - 1.0) < 1e-9 else "INCOMPLETE"
+    if t is not None:
+        r = [math.sqrt(sum((x[k] + u[k]) ** 2 for k in range(3))) for x, u in zip(X, U)]
+        lam_mean = sum(r) / len(r) / R
+        lam_pole = r[pole - 1] / R
+        p_reached = p * t
+        err = (p_reached - p_closed(lam_mean, mu)) / p_closed(lam_mean, mu)
+        spread = (max(r) - min(r)) / R
+        err_worst = max((p_reached / p_closed(ri / R, mu) - 1.0 for ri in r), key=abs)
+    else:
+        lam_mean = lam_pole = p_reached = err = spread = err_worst = float("nan")
+    return dict(incs=incs, attempts=atts, iters=iters, sta_iters=sta_iters, t=t, status=status, lam=lam_mean,
+                lam_pole=lam_pole, p_reached=p_reached, err=err, spread=spread, err_worst=err_worst)
+
+
+def ccx_env():
+    """One thread everywhere: OpenMP, ccx's own thread counts, and a threaded BLAS if any."""
+    return dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1",
+                CCX_NPROC_RESULTS="1", CCX_NPROC_STIFFNESS="1")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, required=True, help="elements per cube-face edge (octant: 3 n^2 elements)")
@@ -190,8 +240,7 @@ def main():
           f"{8 * len(E)}), {len(X)} nodes, p_target = {p:.6g} (mu = {mu:g}), nu = {a.nu}, tol = {a.tol}")
     if a.no_run:
         return
-    env = dict(os.environ, OMP_NUM_THREADS="1", CCX_NPROC_EQUATION_SOLVER="1",
-               CCX_NPROC_RESULTS="1", CCX_NPROC_STIFFNESS="1")
+    env = ccx_env()
     t0 = time.time()
     with open(os.path.join(d, "ccx.log"), "w") as log, open(os.path.join(d, "time.txt"), "w") as tf:
         proc = subprocess.Popen(["/usr/bin/time", "-v", "ccx", job], cwd=d, stdout=log, stderr=tf, env=env,
@@ -207,35 +256,10 @@ def main():
     wall, rss = parse_time_v(open(os.path.join(d, "time.txt")).read())
     if wall is None:
         wall = elapsed
-    # .sta: converged increments; .cvg: one line per Newton iteration (failed attempts included)
-    incs = atts = 0
-    sta_iters = 0
-    sta = os.path.join(d, job + ".sta")
-    if os.path.exists(sta):
-        for line in open(sta):
-            f = line.split()
-            if len(f) >= 7 and f[0].isdigit() and f[1].isdigit():
-                incs += 1
-                atts += int(f[2]) - 1
-                sta_iters += int(f[3])
-    iters = 0
-    cvg = os.path.join(d, job + ".cvg")
-    if os.path.exists(cvg):
-        for line in open(cvg):
-            f = line.split()
-            if len(f) >= 7 and all(x.isdigit() for x in f[:4]):
-                iters += 1
-    t, U = parse_dat(os.path.join(d, job + ".dat"), X) if os.path.exists(os.path.join(d, job + ".dat")) else (None, None)
-    status = "killed after timeout" if killed else ("completed" if t is not None and abs(t - 1.0) < 1e-9 else "INCOMPLETE")
-    if t is not None:
-        r = [math.sqrt(sum((x[k] + u[k]) ** 2 for k in range(3))) for x, u in zip(X, U)]
-        lam_mean = sum(r) / len(r) / R
-        lam_pole = r[pole - 1] / R
-        p_reached = p * t
-        err = (p_reached - p_closed(lam_mean, mu)) / p_closed(lam_mean, mu)
-        spread = (max(r) - min(r)) / R
-    else:
-        lam_mean = lam_pole = p_reached = err = spread = float("nan")
+    r = read_results(d, job, X, mu, p, pole)
+    incs, atts, iters, sta_iters, t = r["incs"], r["attempts"], r["iters"], r["sta_iters"], r["t"]
+    lam_mean, lam_pole, p_reached, err, spread = r["lam"], r["lam_pole"], r["p_reached"], r["err"], r["spread"]
+    status = "killed after timeout" if killed else r["status"]
     print(f"status              {status} (exit {proc.returncode})")
     print(f"elements            {len(E)} {a.elem} (octant; whole-sphere equivalent {8 * len(E)})")
     print(f"increments          {incs} converged ({atts} extra attempts after cut-backs)")

@@ -55,9 +55,11 @@ set +e
 RC=$?
 set -e
 
-python3 - "$DIR" "$N" "$RC" <<'PY'
-import base64, csv, glob, math, struct, sys, xml.etree.ElementTree as ET
+python3 - "$DIR" "$N" "$RC" "$(dirname "$0")" <<'PY'
+import csv, glob, math, sys
 d, n, rc = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+sys.path.insert(0, sys.argv[4])
+from equal_accuracy import radii  # reads every .vtu format Tunica writes (appended raw, zlib, ascii)
 R, H, mu = 1.0, 0.01, 1.0
 pc = lambda l: 2 * mu * (H / R) * (1 / l - l ** -7)
 wall = rss = None
@@ -80,17 +82,8 @@ lam_pole = float(last[[k for k in last if k.startswith("pole_z")][0]]) / R
 lam12 = 0.5 * (float(last["lambda_1"]) + float(last["lambda_2"]))
 
 def vtu_points_radius(path):
-    """Mean and spread of the nodal radius of the deformed surface (VTK inline binary, 64-bit headers)."""
-    root = ET.parse(path).getroot()
-    hdr = "Q" if root.get("header_type", "UInt32") == "UInt64" else "I"
-    arr = root.find(".//Points/DataArray")
-    raw = base64.b64decode("".join(arr.text.split()))
-    hs = struct.calcsize(hdr)
-    nbytes = struct.unpack("<" + hdr, raw[:hs])[0]
-    tp = arr.get("type")
-    fmt, sz = {"Float64": ("d", 8), "Float32": ("f", 4)}[tp]
-    vals = struct.unpack("<%d%s" % (nbytes // sz, fmt), raw[hs:hs + nbytes])
-    r = [math.sqrt(vals[i] ** 2 + vals[i + 1] ** 2 + vals[i + 2] ** 2) for i in range(0, len(vals), 3)]
+    """Mean and spread of the nodal radius of the deformed surface."""
+    r = radii(path)
     return sum(r) / len(r), max(r) - min(r), len(r)
 
 vtus = sorted(glob.glob(f"{d}/vtk/surface_*.vtu"))

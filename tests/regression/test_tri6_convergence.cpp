@@ -6,8 +6,8 @@
 //    enclosed volume and of the pole's radius against the sphere of stretch λ(p);
 //  - the rat-aorta Fung tube (examples/rat-aorta-3d.yaml) prestretched and inflated, against
 //    the thin-tube closed form (8.1): the error of λθ, Sθ, Sz and h against the circle.
-// The meshes are written here as Gmsh 2.2 files: an octahedron face's lattice projected on
-// the sphere, a quarter cylinder's (θ, z) lattice; quadratic elements take their mid-edge
+// The meshes are written as Gmsh 2.2 files (tests/support/lattice_msh.hpp): an octahedron face's
+// lattice projected on the sphere (sphere_octant.hpp), a quarter cylinder's (θ, z) lattice; quadratic elements take their mid-edge
 // nodes on the exact surface (as Gmsh does with Mesh.ElementOrder = 2), linear ones the
 // corners of the same lattice. Flat facets err by O(h²) in the geometry; curved 6-node
 // elements by O(h³) or better.
@@ -26,82 +26,14 @@
 
 #include "../support/capture.hpp"
 #include "../support/fung_tube.hpp"
+#include "../support/lattice_msh.hpp"
+#include "../support/sphere_octant.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// A surface mesh being written as a Gmsh 2.2 file: nodes on a (2n + 1)-lattice of a parameter
-/// domain, triangles (order 1 or 2) and node sets as physical curves.
-struct MshWriter {
-  std::vector<Eigen::Vector3d> nodes;
-  std::map<std::pair<int, int>, int> index;  // lattice point → node tag
-  std::vector<std::vector<int>> triangles;   // node tags, Gmsh order
-  std::map<std::string, std::vector<int>> sets;
-
-  int node(int I, int J, const std::function<Eigen::Vector3d(int, int)>& at) {
-    const auto [it, fresh] = index.emplace(std::make_pair(I, J), static_cast<int>(nodes.size()) + 1);
-    if (fresh) nodes.push_back(at(I, J));
-    return it->second;
-  }
-  void write(const fs::path& path) const {
-    std::ofstream out(path);
-    out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n" << sets.size() + 1 << "\n2 1 \"wall\"\n";
-    int tag = 2;
-    for (const auto& [name, set] : sets) out << "0 " << tag++ << " \"" << name << "\"\n";
-    out << "$EndPhysicalNames\n$Nodes\n" << nodes.size() << "\n";
-    for (std::size_t k = 0; k < nodes.size(); ++k)
-      out << fmt::format("{} {:.17g} {:.17g} {:.17g}\n", k + 1, nodes[k](0), nodes[k](1), nodes[k](2));
-    std::size_t points = 0;
-    for (const auto& [name, set] : sets) points += set.size();
-    out << "$EndNodes\n$Elements\n" << triangles.size() + points << "\n";
-    int e = 1;
-    for (const auto& t : triangles) {
-      out << e++ << (t.size() == 6 ? " 9" : " 2") << " 2 1 1";
-      for (int n : t) out << " " << n;
-      out << "\n";
-    }
-    tag = 2;
-    for (const auto& [name, set] : sets) {
-      for (int n : set) out << e++ << " 15 2 " << tag << " " << 100 + tag << " " << n << "\n";
-      ++tag;
-    }
-    out << "$EndElements\n";
-  }
-};
-
-/// Triangles of an n × m grid of cells of the lattice (2n + 1) × (2m + 1) (or a triangle of it,
-/// `upper`: cells with i + j < n only), order 1 or 2, corners and mid-edges by lattice point.
-void lattice_triangles(MshWriter& w, int n, int m, int order, bool triangle_domain,
-                       const std::function<Eigen::Vector3d(int, int)>& at) {
-  auto tri = [&](std::array<std::pair<int, int>, 3> c) {  // corners in coarse lattice units
-    std::vector<int> t;
-    for (const auto& [i, j] : c) t.push_back(w.node(2 * i, 2 * j, at));
-    if (order == 2)
-      for (int a = 0; a < 3; ++a) {
-        const auto [i0, j0] = c[a];
-        const auto [i1, j1] = c[(a + 1) % 3];
-        t.push_back(w.node(i0 + i1, j0 + j1, at));
-      }
-    w.triangles.push_back(t);
-  };
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < m; ++j) {
-      if (triangle_domain && i + j >= n) continue;
-      tri({{{i, j}, {i + 1, j}, {i, j + 1}}});
-      if (!triangle_domain || i + j + 1 < n) tri({{{i + 1, j}, {i + 1, j + 1}, {i, j + 1}}});
-    }
-}
-
-/// Every lattice node (both orders' nodes are on the lattice) for which `on` holds.
-std::vector<int> nodes_where(const MshWriter& w, const std::function<bool(int, int)>& on) {
-  std::vector<int> out;
-  for (const auto& [ij, tag] : w.index)
-    if (on(ij.first, ij.second)) out.push_back(tag);
-  return out;
-}
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "tunica-tri6-convergence";
@@ -115,27 +47,18 @@ constexpr double kMu = 1.0, kR = 1.0, kH = 0.01;  // MPa, mm, mm
 
 double sphere_pressure(double l) { return 2 * kMu * (kH / kR) * (1 / l - std::pow(l, -7)); }  // (8.3)
 
-/// The octant x, y, z ≥ 0: the octahedron face A = R e_x, B = R e_y, C = R e_z, lattice point
-/// (I, J) of 2n = (2n − I − J) A + I B + J C, projected on the sphere.
+/// The octant x, y, z ≥ 0: the octahedron face's lattice projected on the sphere
+/// (sphere_octant.hpp, n² triangles; node sets x0, y0, z0, pole).
 fs::path octant_msh(int n, int order) {
-  MshWriter w;
-  const auto at = [n](int I, int J) {
-    const Eigen::Vector3d p(2 * n - I - J, I, J);
-    return Eigen::Vector3d(kR * p / p.norm());
-  };
-  lattice_triangles(w, n, n, order, true, at);
-  w.sets["x0"] = nodes_where(w, [n](int I, int J) { return I + J == 2 * n; });
-  w.sets["y0"] = nodes_where(w, [](int I, int) { return I == 0; });
-  w.sets["z0"] = nodes_where(w, [](int, int J) { return J == 0; });
-  w.sets["pole"] = nodes_where(w, [n](int, int J) { return J == 2 * n; });
   const fs::path path = scratch(fmt::format("octant-{}-{}.msh", n, order));
-  w.write(path);
+  sphere_octant_lattice(n, order, OctantLattice::octahedron, kR).write(path.string());
   return path;
 }
 
 struct SphereError {
   double volume = 0, pole = 0;  ///< relative errors of V and of the pole's height at the last increment
   int max_iterations = 0;
+  int unknowns = 0;
 };
 
 SphereError sphere(int n, int order) {
@@ -181,6 +104,7 @@ output:
   e.volume = std::abs(V / V_exact - 1);
   e.pole = std::abs(z / (lambda * kR) - 1);
   for (const auto& it : cap.iterations) e.max_iterations = std::max(e.max_iterations, it.rec.iteration);
+  e.unknowns = a.system().num_free();
   return e;
 }
 
@@ -195,8 +119,8 @@ TEST(Tri6Convergence, SphereVolumeAndPoleConvergeFasterThanFlatTriangles) {
   }
   std::printf("sphere octant, λ = 1.25: relative errors (volume, pole) by elements per edge\n");
   for (std::size_t k = 0; k < ns.size(); ++k)
-    std::printf("  n = %d: tri6 %.3e %.3e (≤ %d iterations) | tri3 (n = %d) %.3e %.3e\n", ns[k], e6[k].volume,
-                e6[k].pole, e6[k].max_iterations, 2 * ns[k], e3[k].volume, e3[k].pole);
+    std::printf("  n = %d: tri6 %.3e %.3e (≤ %d iterations, %d unknowns) | tri3 (n = %d) %.3e %.3e\n", ns[k], e6[k].volume,
+                e6[k].pole, e6[k].max_iterations, e6[k].unknowns, 2 * ns[k], e3[k].volume, e3[k].pole);
   for (std::size_t k = 1; k < ns.size(); ++k) {
     const double r6v = std::log2(e6[k - 1].volume / e6[k].volume), r6p = std::log2(e6[k - 1].pole / e6[k].pole);
     const double r3v = std::log2(e3[k - 1].volume / e3[k].volume);
@@ -221,23 +145,23 @@ constexpr double kLength = 1.0;  // mm
 /// triangles; lattice point (I, J) at θ = I π/(4 around), z = J L/(2 along), on the cylinder.
 fs::path tube_msh(int around, int along, int order) {
   MshWriter w;
-  const auto at = [=](int I, int J) {
-    const double t = I * std::numbers::pi / (4 * around);
-    return Eigen::Vector3d(ft::R * std::cos(t), ft::R * std::sin(t), J * kLength / (2 * along));
+  const auto at = [=](const LatticePoint& l) {
+    const double t = l[0] * std::numbers::pi / (4 * around);
+    return Eigen::Vector3d(ft::R * std::cos(t), ft::R * std::sin(t), l[1] * kLength / (2 * along));
   };
   lattice_triangles(w, around, along, order, false, at);
-  w.sets["x0"] = nodes_where(w, [=](int I, int) { return I == 2 * around; });
-  w.sets["y0"] = nodes_where(w, [](int I, int) { return I == 0; });
-  w.sets["bottom"] = nodes_where(w, [](int, int J) { return J == 0; });
-  w.sets["top"] = nodes_where(w, [=](int, int J) { return J == 2 * along; });
+  w.sets["x0"] = w.nodes_where([=](const LatticePoint& l) { return l[0] == 2 * around; });
+  w.sets["y0"] = w.nodes_where([](const LatticePoint& l) { return l[0] == 0; });
+  w.sets["bottom"] = w.nodes_where([](const LatticePoint& l) { return l[1] == 0; });
+  w.sets["top"] = w.nodes_where([=](const LatticePoint& l) { return l[1] == 2 * along; });
   const fs::path path = scratch(fmt::format("tube-{}-{}-{}.msh", around, along, order));
-  w.write(path);
+  w.write(path.string());
   return path;
 }
 
 struct TubeError {
   double hoop = 0;  ///< largest relative error of λθ, Sθ, Sz, h against the circle's closed form, over the inflation
-  int increments = 0, max_iterations = 0;
+  int increments = 0, max_iterations = 0, unknowns = 0;
 };
 
 TubeError tube(int around, int order) {
@@ -270,6 +194,7 @@ TubeError tube(int around, int order) {
     ++e.increments;
   }
   for (const auto& it : cap.iterations) e.max_iterations = std::max(e.max_iterations, it.rec.iteration);
+  e.unknowns = a.system().num_free();
   return e;
 }
 
@@ -284,8 +209,8 @@ TEST(Tri6Convergence, FungTubeConvergesFasterThanFlatTriangles) {
   }
   std::printf("Fung tube quarter: largest relative error of λθ, Sθ, Sz, h over the inflation, by cells around\n");
   for (std::size_t k = 0; k < arounds.size(); ++k)
-    std::printf("  %d around: tri6 %.3e (≤ %d iterations) | tri3 (%d around) %.3e\n", arounds[k], e6[k].hoop,
-                e6[k].max_iterations, 2 * arounds[k], e3[k].hoop);
+    std::printf("  %d around: tri6 %.3e (≤ %d iterations, %d unknowns) | tri3 (%d around) %.3e (%d unknowns)\n", arounds[k], e6[k].hoop,
+                e6[k].max_iterations, e6[k].unknowns, 2 * arounds[k], e3[k].hoop, e3[k].unknowns);
   for (std::size_t k = 1; k < arounds.size(); ++k) {
     const double r6 = std::log2(e6[k - 1].hoop / e6[k].hoop), r3 = std::log2(e3[k - 1].hoop / e3[k].hoop);
     std::printf("  rates %d → %d around: tri6 %.2f, tri3 %.2f\n", arounds[k - 1], arounds[k], r6, r3);
