@@ -60,6 +60,9 @@ void start_with_thread_environment(int n, char** argv) {
   if (n < 1) n = 1;
   const std::string count = std::to_string(n);
   if (const char* prepared = std::getenv("TUNICA_THREADS"); prepared && count == prepared) return;
+  // Valgrind follows an exec only with --trace-children=yes: under it the run goes on as started,
+  // or valgrind would watch nothing of it.
+  if (const char* preload = std::getenv("LD_PRELOAD"); preload && std::strstr(preload, "vgpreload")) return;
   setenv("OMP_NUM_THREADS", count.c_str(), 1);
   // A cap on every OpenMP team in the process, a library's num_threads clause included.
   setenv("OMP_THREAD_LIMIT", count.c_str(), 1);

@@ -27,8 +27,9 @@ int default_compute_threads();
 /// here), sets OMP_NUM_THREADS and OMP_THREAD_LIMIT to n, the BLAS's threads (OPENBLAS_NUM_THREADS,
 /// BLIS_NUM_THREADS, MKL_NUM_THREADS) to 1 and OMP_WAIT_POLICY to passive (unless the user set it
 /// or GOMP_SPINCOUNT), and executes this program again with the same arguments (same process id).
-/// Returns when that is not needed, or when the exec fails (with a warning on stderr: then
-/// set_compute_threads still sets the counts, and the waits are the libraries' defaults).
+/// Returns when that is not needed, under valgrind (which would not follow the exec), or when the
+/// exec fails (with a warning on stderr); then set_compute_threads still sets the counts, and the
+/// waits are the libraries' defaults.
 void start_with_thread_environment(int n, char** argv);
 
 /// Sets the teams for n threads (n ≥ 1): OpenMP's element loops to n (omp_set_num_threads,
