@@ -32,7 +32,6 @@
 // tangent with the same solver (its symbolic analysis done beforehand).
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <omp.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -48,6 +47,7 @@
 
 #include "fit/thin_tube.hpp"
 #include "io/deck.hpp"
+#include "linalg/compute_threads.hpp"
 #include "solver/analysis.hpp"
 #include "linalg/linear_solver.hpp"
 #include "../tests/support/fung_tube.hpp"
@@ -183,7 +183,9 @@ struct Recorder : tunica::AnalysisObserver {
 };
 
 int run(const Options& o) {
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  tunica::set_compute_threads(o.threads);
+  std::printf("threads: %s\n", tunica::compute_threads_summary().c_str());
+  std::fflush(stdout);
   int around = 0;
   std::filesystem::path scratch;
   if (o.problem == "sphere" && o.element != "quad4") {
@@ -304,7 +306,7 @@ int run(const Options& o) {
   const std::string size = size_label(o, around);
   std::printf("%-7s %-9s elements %ld  nodes %d  unknowns %d  nonzeros %ld  threads %d  solver %s%s\n", o.problem.c_str(),
               size.c_str(), elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
-              omp_get_max_threads(), used.c_str(), o.symmetrized ? " (symmetrized)" : "");
+              tunica::compute_threads(), used.c_str(), o.symmetrized ? " (symmetrized)" : "");
   std::printf("  tangent asymmetry max|K - K^T| / max|K| = %.2e\n", asym / kmax);
   std::printf("  increments %zu  Newton iterations %d  max per increment %d  cut-backs %d\n",
               rec.iterations_per_increment.size(), solves, max_its, rec.cutbacks);
@@ -345,7 +347,7 @@ int run(const Options& o) {
              "first_factor_s,setup_s,run_s,peak_rss_MB,closed_form_error,median_iteration_s,floor_s,iterations_over_floor,paired_bare_factor_s\n";
     csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{},{:.5g},{:.5g},{:.4f},{:.5g}\n",
                        o.problem, size, elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
-                       omp_get_max_threads(), used, o.symmetrized ? 1 : 0, o.residual_tolerance, o.energy_tolerance,
+                       tunica::compute_threads(), used, o.symmetrized ? 1 : 0, o.residual_tolerance, o.energy_tolerance,
                        rec.iterations_per_increment.size(), solves,
                        max_its, rec.cutbacks, per_iteration, assembly / solves, factor / solves, solve / solves, t_bare,
                        t_first, t_setup, t_run, peak_rss_mb(), accuracy, median, floor,
@@ -380,9 +382,13 @@ int main(int argc, char** argv) {
   app.add_option("--energy-tolerance", o.energy_tolerance, "Newton: |Δu·R| relative to the first (deck default 1e-12)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--paired", o.paired, "time a bare factorization of the same matrix next to each of the run's");
-  app.add_option("--threads", o.threads, "threads of the element loops")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", o.threads,
+                 "threads to compute on (default: OMP_NUM_THREADS, else the CPUs this process may run on): the element "
+                 "loops take them, the BLAS and CHOLMOD one")->check(CLI::Range(1, 1024));
   app.add_option("--csv", o.csv, "append a row to this CSV file");
   CLI11_PARSE(app, argc, argv);
+  if (o.threads <= 0) o.threads = tunica::default_compute_threads();
+  tunica::start_with_thread_environment(o.threads, argv);
   try {
     if (!o.write_deck.empty()) {
       if (o.problem != "sphere") throw std::invalid_argument("--write-deck: sphere only");

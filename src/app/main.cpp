@@ -1,6 +1,5 @@
 // The `tunica` command line: run, check, reference and fit.
 #include <CLI/CLI.hpp>
-#include <omp.h>
 #include <fmt/format.h>
 
 #include <chrono>
@@ -14,6 +13,7 @@
 #include "fit/fit_command.hpp"
 #include "io/deck.hpp"
 #include "io/reference.hpp"
+#include "linalg/compute_threads.hpp"
 #include "core/printable.hpp"
 #include "assembly/pressure_load_checks.hpp"
 #include "mesh/geo_mesher.hpp"
@@ -140,6 +140,7 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
       std::printf("resuming from step %d, increment %d (step fraction %.6g) in %s\n", resume->checkpoint.step + 1,
                   resume->checkpoint.increment, resume->checkpoint.fraction, restart.c_str());
   }
+  if (!quiet) std::printf("threads: %s\n", tunica::compute_threads_summary().c_str());
   tunica::RunWriter writer(model, out, quiet ? nullptr : stdout, resume.get());
   tunica::Analysis analysis(model);
   print_warnings(analysis.system());
@@ -223,8 +224,9 @@ int main(int argc, char** argv) {
   const char* scripts_help = "mesh the Gmsh scripts (.geo) the deck names; a script can run commands";
   run_cmd->add_flag("--allow-scripts", read_options.allow_scripts, scripts_help);
   int threads = 0;
-  run_cmd->add_option("-j,--threads", threads, "threads of the element loops (default: OMP_NUM_THREADS or all cores); "
-                                              "results do not depend on it")
+  run_cmd->add_option("-j,--threads", threads,
+                      "threads to compute on (default: OMP_NUM_THREADS, else the CPUs this process may run on): the "
+                      "element loops take them, the BLAS and CHOLMOD one; results do not depend on it")
       ->check(CLI::Range(1, 1024));
   auto* check_cmd = app.add_subcommand("check", "validate a deck without solving");
   check_cmd->add_option("deck", deck, "YAML deck")->required();
@@ -271,8 +273,10 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kInputErrorExit;
   }
   try {
+    const int compute_threads = threads > 0 ? threads : tunica::default_compute_threads();
+    if (*run_cmd) tunica::start_with_thread_environment(compute_threads, argv);
+    tunica::set_compute_threads(compute_threads);
     if (*run_cmd) {
-      if (threads > 0) omp_set_num_threads(threads);
       return run(deck, out, restart, quiet, read_options);
     }
     if (*check_cmd) return check(deck, read_options);

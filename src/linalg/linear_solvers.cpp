@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "linalg/compute_threads.hpp"
 #include "linalg/matrix_symmetry.hpp"
 
 namespace tunica {
@@ -15,11 +16,21 @@ namespace {
 /// Adapter for Eigen's sparse direct solvers (same analyzePattern/factorize/solve API).
 template <class Solver>
 class EigenDirect final : public LinearSolver {
+  static constexpr bool kCholmod = requires(Solver s) { s.cholmod(); };
+  /// CHOLMOD's own OpenMP loops run on the calling thread (linalg/compute_threads.hpp).
+  struct Scope {
+    std::optional<SerialOpenMP> serial;
+    Scope() {
+      if constexpr (kCholmod) serial.emplace();
+    }
+  };
+
 public:
   EigenDirect(const char* name, const char* refusal) : name_(name), refusal_(refusal) {
-    if constexpr (requires(Solver s) { s.cholmod(); }) solver_.cholmod().print = 0;  // failures are reported by us
+    if constexpr (kCholmod) solver_.cholmod().print = 0;  // failures are reported by us
   }
   bool factorize(const SparseMatrix& K) override {
+    const Scope scope;
     if (!analyzed_) {
       solver_.analyzePattern(K);
       analyzed_ = true;
@@ -27,7 +38,10 @@ public:
     solver_.factorize(K);
     return solver_.info() == Eigen::Success;
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return solver_.solve(b); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override {
+    const Scope scope;
+    return solver_.solve(b);
+  }
   const char* used() const override { return name_; }
   std::string refusal() const override { return refusal_; }
 

@@ -10,6 +10,7 @@
 #include "core/bounded_file.hpp"
 #include "core/printable.hpp"
 #include "elements/membrane_compression.hpp"
+#include "linalg/compute_threads.hpp"
 #include "output/atomic_file.hpp"
 #include "output/history.hpp"
 #include "output/output_folder.hpp"
@@ -50,7 +51,7 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
   for (const auto& r : model.output.history) history_header_ += "," + r.column;
   history_header_ += "\n";
   newton_header_ = "step,increment,attempt,iteration,time,residual,relative_residual,energy,relative_energy,"
-                   "backtracks,active_contacts,active_changes,solver,assembly_s,factor_s,solve_s\n";
+                   "backtracks,active_contacts,active_changes,solver,threads,assembly_s,factor_s,solve_s\n";
   if (resume) {
     resume_from(*resume);
     return;
@@ -118,10 +119,12 @@ void RunWriter::resume_from(const RestartRecord& r) {
 }
 
 void RunWriter::on_iteration(const IncrementInfo& info, const IterationRecord& r) {
-  newton_pending_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{},{},{:.3e},{:.3e},{:.3e}\n", info.step,
+  // The thread count on every row, not once above the columns: a restart may continue the rows with
+  // another -j, and the timings beside it are what that count gave.
+  newton_pending_ += fmt::format("{},{},{},{},{:.12g},{:.6e},{:.6e},{:.6e},{:.6e},{},{},{},{},{},{:.3e},{:.3e},{:.3e}\n", info.step,
                                  info.increment, info.attempt, r.iteration, info.time, r.residual, r.relative_residual,
                                  r.energy, r.relative_energy, r.backtracks, r.active_contacts, r.active_changes, r.solver,
-                                 r.assembly_seconds, r.factor_seconds, r.solve_seconds);
+                                 compute_threads(), r.assembly_seconds, r.factor_seconds, r.solve_seconds);
   ++newton_rows_;
   if (progress_)
     std::fprintf(progress_, "  step %d increment %d iteration %d  residual %.3e  relative %.3e\n", info.step,
