@@ -97,7 +97,7 @@ struct PairedLog {
 class PairedSolver final : public tunica::LinearSolver {
 public:
   PairedSolver(std::unique_ptr<tunica::LinearSolver> inner, PairedLog& log) : inner_(std::move(inner)), log_(log) {}
-  bool factorize(const tunica::SparseMatrix& K) override {
+  bool factorize(const tunica::TangentMatrix& K) override {
     const bool ok = inner_->factorize(K);
     if (!ok) return false;
     const double t0 = now();
@@ -117,6 +117,7 @@ public:
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override { return inner_->solve(b); }
   const char* used() const override { return inner_->used(); }
+  bool reads_upper() const override { return inner_->reads_upper(); }  // the bare solver is of a kind the inner one uses
 
 private:
   std::unique_ptr<tunica::LinearSolver> inner_;
@@ -181,14 +182,16 @@ int run(const Options& o) {
   // The floor: one bare numeric factorization of the last tangent with the solver the run used.
   const tunica::System& system = analysis.system();
   Eigen::VectorXd R;
-  tunica::SparseMatrix K = system.pattern();
+  tunica::TangentMatrix K = system.tangent(true);  // both triangles: any solver's input, and the asymmetry
   system.assemble(analysis.displacement(), analysis.loads(), R, &K);
+  const long nonzeros = static_cast<long>(system.pattern().nonZeros());
   double asym = 0, kmax = 0;
   {
-    const tunica::SparseMatrix Kt = K.transpose();
-    const tunica::SparseMatrix D = K - Kt;
+    const tunica::SparseMatrix full = K.full();
+    const tunica::SparseMatrix Kt = full.transpose();
+    const tunica::SparseMatrix D = full - Kt;
     asym = D.coeffs().abs().maxCoeff();
-    kmax = K.coeffs().abs().maxCoeff();
+    kmax = full.coeffs().abs().maxCoeff();
   }
   // The floor: bare numeric factorizations of the last tangent, with each solver the run used
   // (CHOLMOD for the symmetric positive definite iterations, UMFPACK for the others: a stress-free
@@ -263,7 +266,7 @@ int run(const Options& o) {
   }
   const std::string size = o.problem == "tube" ? fmt::format("{}x{}", around, around) : fmt::format("n={}", o.n);
   std::printf("%-7s %-9s elements %ld  nodes %d  unknowns %d  nonzeros %ld  threads %d  solver %s%s\n", o.problem.c_str(),
-              size.c_str(), elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
+              size.c_str(), elements, model.num_nodes(), system.num_free(), nonzeros,
               omp_get_max_threads(), used.c_str(), o.symmetrized ? " (symmetrized)" : "");
   std::printf("  tangent asymmetry max|K - K^T| / max|K| = %.2e\n", asym / kmax);
   std::printf("  increments %zu  Newton iterations %d  max per increment %d  cut-backs %d\n",
@@ -304,7 +307,7 @@ int run(const Options& o) {
              "max_iterations_per_increment,cutbacks,iteration_s,assembly_s,factor_s,solve_s,bare_factor_s,"
              "first_factor_s,setup_s,run_s,peak_rss_MB,closed_form_error,median_iteration_s,floor_s,iterations_over_floor,paired_bare_factor_s\n";
     csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{},{:.5g},{:.5g},{:.4f},{:.5g}\n",
-                       o.problem, size, elements, model.num_nodes(), system.num_free(), static_cast<long>(K.nonZeros()),
+                       o.problem, size, elements, model.num_nodes(), system.num_free(), nonzeros,
                        omp_get_max_threads(), used, o.symmetrized ? 1 : 0, o.residual_tolerance, o.energy_tolerance,
                        rec.iterations_per_increment.size(), solves,
                        max_its, rec.cutbacks, per_iteration, assembly / solves, factor / solves, solve / solves, t_bare,
