@@ -69,9 +69,6 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     // CHOLMOD's symbolic analysis, once: the storage the tangent is assembled in.
     layout_ = std::make_shared<const TangentLayout>(std::move(pattern));
   }
-  // Row of P K Pᵀ of each equation: the order the elements of a colour are scattered in.
-  std::vector<int> permuted_row(static_cast<std::size_t>(num_free_));
-  for (int k = 0; k < num_free_; ++k) permuted_row[layout_->ordering()[k]] = k;
   blocks_.resize(model.parts.size());
   extent_.assign(model.parts.size(), 0.0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -104,22 +101,6 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
           }
       }
       colour_elements(block, model.num_nodes(), layout.order, layout.colour_start);
-      // The elements of a colour touch disjoint entries, so their order changes no sum: each
-      // colour is scattered in the order of the elements' first row of P K Pᵀ, so that consecutive
-      // elements (and each thread's share of them) write neighbouring columns of the split storage,
-      // which the mesh's order spreads over all of it.
-      {
-        std::vector<int> first_row(static_cast<std::size_t>(block.size()), num_free_);
-        for (int e = 0; e < block.size(); ++e) {
-          const int* en = block.element(e);
-          for (int a = 0; a < nd; ++a)
-            if (const int i = eq_[model.node_dof(en[a / ndn], a % ndn)]; i >= 0)
-              first_row[e] = std::min(first_row[e], permuted_row[i]);
-        }
-        for (std::size_t c = 0; c + 1 < layout.colour_start.size(); ++c)
-          std::stable_sort(layout.order.begin() + layout.colour_start[c], layout.order.begin() + layout.colour_start[c + 1],
-                           [&](int x, int y) { return first_row[x] < first_row[y]; });
-      }
       blocks_[p].push_back(type.make(BlockContext{.model = model,
                                                   .part = part,
                                                   .block = block,

@@ -32,7 +32,7 @@ struct BlockLayout {
   /// −1: not free-free). The pair's slot s holds K's lower-triangle entry in lower[s], the other
   /// in upper[s]: the code's low bit says which of K_e(a, b), K_e(b, a) is the upper one.
   std::vector<int> scatter;
-  std::vector<int> order;         ///< element indices, colour by colour (no two of a colour share a node), each colour in the order it is scattered in
+  std::vector<int> order;         ///< element indices, colour by colour (no two of a colour share a node)
   std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])
 };
 
