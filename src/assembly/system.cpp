@@ -86,17 +86,13 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
       const ElementType& type = element_type(block.kind);
       BlockLayout layout;
       const int ndn = type.unknowns_per_node, nd = type.nodes * ndn;
-      // One code per pair a ≤ b of the element's unknowns (BlockLayout::scatter).
-      layout.scatter.resize(static_cast<std::size_t>(block.size()) * (nd * (nd + 1) / 2));
+      layout.scatter.resize(static_cast<std::size_t>(block.size()) * nd * nd);
       int* code = layout.scatter.data();
       for (int e = 0; e < block.size(); ++e) {
         const int* en = block.element(e);
         for (int a = 0; a < nd; ++a)
-          for (int b = a; b < nd; ++b) {
+          for (int b = 0; b < nd; ++b) {
             const int i = eq_[model.node_dof(en[a / ndn], a % ndn)], j = eq_[model.node_dof(en[b / ndn], b % ndn)];
-            // Two unknowns of an element on one equation (a repeated node, which the mesh checks
-            // reject) would put two terms in one entry where the pair has one.
-            if (a != b && i >= 0 && i == j) throw std::logic_error("an element has two unknowns on one equation");
             *code++ = layout_->entry(i, j);
           }
       }

@@ -11,9 +11,9 @@
 // kind's registered type for its nodes and unknowns per node.
 //
 // K is assembled in the split storage of a TangentLayout (linalg/tangent_layout.hpp), built once
-// with the pattern: the lower triangle directly as tril(P K Pᵀ) in CHOLMOD's ordering, which
-// CHOLMOD factorizes without transposing or permuting it, and the upper triangle beside it only
-// where the consumer reads it (TangentMatrix's `upper`: the symmetry test of `auto`, UMFPACK, the
+// with the pattern, with CHOLMOD's symbolic analysis: the lower triangle, from which CHOLMOD's
+// tril(P K Pᵀ) is gathered without a transpose, and the upper triangle beside it only where the
+// consumer reads it (TangentMatrix's `upper`: the symmetry test of `auto`, UMFPACK, the
 // symmetrized tangent, volume control's bordered system). The full matrix is expanded from the
 // two only for a consumer that needs it (assemble_full, TangentMatrix::expand).
 //

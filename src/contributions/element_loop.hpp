@@ -62,7 +62,6 @@ template <class Kernel>
 class KernelBlock final : public BlockContribution {
 public:
   static constexpr int kDofs = Kernel::kNodes * Kernel::kUnknowns;
-  static constexpr int kPairs = kDofs * (kDofs + 1) / 2;  ///< scatter codes per element (BlockLayout)
   using Vector = Eigen::Matrix<double, kDofs, 1>;
   using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
   using State = typename Kernel::State;
@@ -82,8 +81,8 @@ public:
     agree("unknowns per node", Kernel::kUnknowns, type.unknowns_per_node, "the registration");
     agree("solid", Kernel::kSolid, type.solid, "the registration");
     agree("pressure", Kernel::kPressure, type.pressure, "the registration");
-    agree("scatter codes per element", kPairs,
-          block_.size() ? static_cast<long>(layout_.scatter.size()) / block_.size() : kPairs, "the layout");
+    agree("scatter codes per element", kDofs * kDofs,
+          block_.size() ? static_cast<long>(layout_.scatter.size()) / block_.size() : kDofs * kDofs, "the layout");
     if (Kernel::kStartStiffness)
       agree("curvatures (one per element)", block_.size(), static_cast<long>(curvature_.size()), "the context");
     if (!wrong.empty()) throw std::logic_error("element type " + type.name + " disagrees with itself" + wrong);
@@ -113,7 +112,7 @@ public:
       // Stiffness × element size bounds the round-off of stresses computed near zero strain.
       if (K) s2 += Ke.squaredNorm() * kernel_.length2(model_, en, s);
       scale_e[e] = s2;
-      scatter(en, f, K ? &Ke : nullptr, layout_.scatter.data() + kPairs * e, R, K);
+      scatter(en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
     });
     for (double s2 : scale_e) scale2 += s2;
   }
@@ -173,7 +172,7 @@ public:
           for (int a = 0; a < kDofs; ++a) de(a) = d(Kernel::dof(model_, en, a));
           f = Ke * de;
         }
-        scatter(en, f, &Ke, layout_.scatter.data() + kPairs * e, Kd, &K);
+        scatter(en, f, &Ke, layout_.scatter.data() + kDofs * kDofs * e, Kd, &K);
       });
     }
   }
@@ -217,27 +216,19 @@ private:
     }
   }
 
-  /// R(dof a) += f(a); K += K_e through the element's pair codes (BlockLayout): each pair a < b
-  /// adds the entry of K's lower triangle to lower[s] and, where the upper triangle is stored, the
-  /// other to upper[s]; a diagonal pair adds K_e(a, a) to lower[s]. Every entry of K receives one
-  /// term per element, in the elements' order, as a full matrix's entry would.
+  /// R(dof a) += f(a); K += K_e through the element's codes (BlockLayout): K_e(a, b) is added to
+  /// the split storage at its code, those of the upper triangle only where it is stored. Every entry
+  /// of K receives one term per element, in the elements' order, as a full matrix's entry would.
   void scatter(const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
                TangentMatrix* K) const {
     for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
     if (!K) return;
-    double* lower = K->lower();
-    double* upper = K->upper();
-    for (int a = 0; a < kDofs; ++a) {
-      if (const int c = *code++; c >= 0) lower[c >> 1] += (*Ke)(a, a);
-      for (int b = a + 1; b < kDofs; ++b) {
-        const int c = *code++;
-        if (c < 0) continue;
-        const double ab = (*Ke)(a, b), ba = (*Ke)(b, a);
-        const bool flipped = c & 1;  // (row of a, row of b) lies in K's upper triangle
-        lower[c >> 1] += flipped ? ba : ab;
-        if (upper) upper[c >> 1] += flipped ? ab : ba;
-      }
-    }
+    double* values = K->values();
+    // Unsigned: −1 (not free-free) is beyond the stored codes as well.
+    const unsigned stored = static_cast<unsigned>(K->stored());
+    for (int a = 0; a < kDofs; ++a)
+      for (int b = 0; b < kDofs; ++b)
+        if (const unsigned k = static_cast<unsigned>(code[a * kDofs + b]); k < stored) values[k] += (*Ke)(a, b);
   }
 
   const Model& model_;

@@ -27,10 +27,9 @@ namespace tunica {
 
 /// What System computes once for a block, generically: the scatter codes and the colouring.
 struct BlockLayout {
-  /// Per element, one code per pair of its unknowns a ≤ b, (n·d)(n·d + 1)/2 row by row (a, then
-  /// b = a … n·d − 1): TangentLayout::entry of (row of a, row of b) (linalg/tangent_layout.hpp;
-  /// −1: not free-free). The pair's slot s holds K's lower-triangle entry in lower[s], the other
-  /// in upper[s]: the code's low bit says which of K_e(a, b), K_e(b, a) is the upper one.
+  /// Per element, (n·d)² codes, row by row: where K_e(a, b) is added, TangentLayout::entry of
+  /// (row of a, row of b) (linalg/tangent_layout.hpp: an index into the split storage, its lower
+  /// triangle first; −1: not free-free).
   std::vector<int> scatter;
   std::vector<int> order;         ///< element indices, colour by colour (no two of a colour share a node)
   std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])

@@ -3,9 +3,9 @@
 // takes its choices from the registry, and the deck reference lists them with their one-line
 // descriptions (`tunica reference`; the shipped ones are in linalg/linear_solvers.cpp). The
 // symbolic analysis is done once per pattern and reused by every numeric factorization. A solver
-// is handed the assembled tangent in split storage (linalg/tangent_matrix.hpp: the lower triangle
-// of P K Pᵀ as CHOLMOD factorizes it, the upper one beside it if the solver reads it) or a general
-// matrix; one that wants the full matrix expands it (TangentMatrix::expand).
+// is handed the assembled tangent in split storage (linalg/tangent_matrix.hpp: the lower triangle,
+// from which CHOLMOD's tril(P K Pᵀ) is gathered, and the upper one beside it if the solver reads
+// it) or a general matrix; one that wants the full matrix expands it (TangentMatrix::expand).
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>

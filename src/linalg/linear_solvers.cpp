@@ -44,13 +44,13 @@ private:
   const char* name_;
 };
 
-/// CHOLMOD's supernodal LLᵀ. A split tangent's lower triangle is tril(P K Pᵀ) in the ordering of
-/// its layout's symbolic analysis (linalg/tangent_layout.hpp), which is what
-/// cholmod_super_numeric factorizes: it is handed over as it is, into a copy of that analysis,
-/// where cholmod_factorize would permute and transpose the lower triangle of K twice to build it.
-/// The factor and the solve (cholmod_solve with the layout's P) are those of cholmod_factorize,
-/// bit for bit. A general matrix (both triangles) goes through Eigen's wrapper, its lower triangle
-/// factorized, its analysis on the first call.
+/// CHOLMOD's supernodal LLᵀ. Of a split tangent it reads the lower triangle, gathered into
+/// tril(P K Pᵀ) in the ordering of its layout's symbolic analysis (linalg/tangent_layout.hpp), the
+/// matrix cholmod_super_numeric factorizes, into a copy of that analysis: where cholmod_factorize
+/// would permute and transpose K's lower triangle twice to build it. The factor and the solve
+/// (cholmod_solve with the layout's P) are those of cholmod_factorize, bit for bit. A general
+/// matrix (both triangles) goes through Eigen's wrapper, its lower triangle factorized, its
+/// analysis on the first call.
 class Cholmod final : public LinearSolver {
 public:
   explicit Cholmod(const char* refusal) : refusal_(refusal) {
@@ -101,12 +101,14 @@ private:
       if (!factor_) throw std::runtime_error("CHOLMOD could not copy the symbolic factor");
     }
     if (layout.size() == 0) return true;
+    permuted_.resize(static_cast<std::size_t>(layout.slots()));
+    layout.to_cholmod(K.lower(), permuted_.data());
     cholmod_sparse S{};
     S.nrow = S.ncol = static_cast<std::size_t>(layout.size());
     S.nzmax = static_cast<std::size_t>(layout.slots());
-    S.p = const_cast<int*>(layout.lower_outer().data());
-    S.i = const_cast<int*>(layout.lower_inner().data());
-    S.x = const_cast<double*>(K.lower());
+    S.p = const_cast<int*>(layout.cholmod_outer().data());
+    S.i = const_cast<int*>(layout.cholmod_inner().data());
+    S.x = permuted_.data();
     S.stype = -1;
     S.itype = CHOLMOD_INT;
     S.xtype = CHOLMOD_REAL;
@@ -133,6 +135,7 @@ private:
   cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
   std::shared_ptr<const TangentLayout> source_;  // the layout factor_ was copied from
+  std::vector<double> permuted_;                 // tril(P K Pᵀ) of the last split tangent
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> general_;
   bool general_analyzed_ = false;
   Eigen::Index general_rows_ = 0, general_nonzeros_ = 0;

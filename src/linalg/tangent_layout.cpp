@@ -64,58 +64,74 @@ TangentLayout::TangentLayout(SparseMatrix pattern) : pattern_(std::move(pattern)
     const int* P = static_cast<const int*>(cholmod_->factor->Perm);
     std::copy(P, P + n, perm.begin());
   }
-  std::vector<int> row_of(static_cast<std::size_t>(n));  // pᵢ: the row of P K Pᵀ that row i becomes
-  for (int k = 0; k < n; ++k) row_of[perm[k]] = k;
-
-  // The lower triangle of P K Pᵀ, column by column with ascending rows: the pairs i ≥ j bucketed
-  // by their row in P K Pᵀ, then appended to their columns row by row.
+  // The storage: K's lower triangle in Tunica's numbering, column by column with ascending rows (the
+  // pattern's own order, which follows the mesh: the element loop's writes stay near each other);
+  // an upper entry (i < j) shares the slot of its transpose, S further on.
   const long nnz = pattern_.nonZeros();
-  std::vector<int> by_row_start(static_cast<std::size_t>(n) + 1, 0), count(static_cast<std::size_t>(n) + 1, 0);
-  long pairs = 0;
-  for (int j = 0; j < n; ++j)
+  codes_.assign(static_cast<std::size_t>(nnz), -1);
+  lower_outer_.assign(static_cast<std::size_t>(n) + 1, 0);
+  lower_inner_.clear();
+  lower_inner_.reserve(static_cast<std::size_t>((nnz + n) / 2));
+  for (int j = 0; j < n; ++j) {
+    lower_outer_[j] = static_cast<int>(lower_inner_.size());
     for (int q = outer[j]; q < outer[j + 1]; ++q)
       if (const int i = inner[q]; i >= j) {
         if (find(j, i) < 0) throw std::invalid_argument("TangentLayout: the sparsity pattern is not symmetric");
-        ++by_row_start[std::max(row_of[i], row_of[j]) + 1];
-        ++count[std::min(row_of[i], row_of[j]) + 1];
-        ++pairs;
+        codes_[q] = static_cast<int>(lower_inner_.size());
+        lower_inner_.push_back(i);
       }
-  if (2 * pairs + 1 > INT_MAX) throw std::length_error("TangentLayout: too many nonzeros for int indices");
+  }
+  const long slots = static_cast<long>(lower_inner_.size());
+  lower_outer_[n] = static_cast<int>(slots);
+  if (2 * slots + 1 > INT_MAX) throw std::length_error("TangentLayout: too many nonzeros for int indices");
+  for (int j = 0; j < n; ++j)
+    for (int q = outer[j]; q < outer[j + 1]; ++q)
+      if (const int i = inner[q]; i < j) codes_[q] = static_cast<int>(slots) + codes_[find(j, i)];
+  diagonal_.assign(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i)
+    if (const int q = find(i, i); q >= 0) diagonal_[i] = codes_[q];
+
+  // CHOLMOD's matrix, tril(P K Pᵀ), column by column with ascending rows: the slots bucketed by
+  // their row of P K Pᵀ, then appended to their columns row by row.
+  std::vector<int> row_of(static_cast<std::size_t>(n));  // pᵢ: the row of P K Pᵀ that row i becomes
+  for (int k = 0; k < n; ++k) row_of[perm[k]] = k;
+  std::vector<int> by_row_start(static_cast<std::size_t>(n) + 1, 0);
+  cholmod_outer_.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (int j = 0; j < n; ++j)
+    for (int s = lower_outer_[j]; s < lower_outer_[j + 1]; ++s) {
+      const int i = lower_inner_[s];
+      ++by_row_start[std::max(row_of[i], row_of[j]) + 1];
+      ++cholmod_outer_[std::min(row_of[i], row_of[j]) + 1];
+    }
   for (int k = 0; k < n; ++k) {
     by_row_start[k + 1] += by_row_start[k];
-    count[k + 1] += count[k];
+    cholmod_outer_[k + 1] += cholmod_outer_[k];
   }
-  std::vector<int> by_row(static_cast<std::size_t>(pairs));  // pattern positions of the pairs, by row
+  std::vector<int> by_row(static_cast<std::size_t>(slots)), column_of(static_cast<std::size_t>(slots));
   {
     std::vector<int> next(by_row_start.begin(), by_row_start.end() - 1);
     for (int j = 0; j < n; ++j)
-      for (int q = outer[j]; q < outer[j + 1]; ++q)
-        if (const int i = inner[q]; i >= j) by_row[next[std::max(row_of[i], row_of[j])]++] = q;
-  }
-  lower_outer_.assign(count.begin(), count.end());
-  lower_inner_.resize(static_cast<std::size_t>(pairs));
-  codes_.assign(static_cast<std::size_t>(nnz), -1);
-  {
-    std::vector<int> next(lower_outer_.begin(), lower_outer_.end() - 1);
-    // Column of each pattern position (the pairs' j).
-    std::vector<int> column(static_cast<std::size_t>(nnz));
-    for (int j = 0; j < n; ++j) std::fill(column.begin() + outer[j], column.begin() + outer[j + 1], j);
-    for (int r = 0; r < n; ++r)
-      for (int k = by_row_start[r]; k < by_row_start[r + 1]; ++k) {
-        const int q = by_row[k];
-        const int i = inner[q], j = column[q];
-        const int slot = next[std::min(row_of[i], row_of[j])]++;
-        lower_inner_[slot] = r;
-        codes_[q] = 2 * slot;
+      for (int s = lower_outer_[j]; s < lower_outer_[j + 1]; ++s) {
+        by_row[next[std::max(row_of[lower_inner_[s]], row_of[j])]++] = s;
+        column_of[s] = j;
       }
-    // The upper entries (i < j) share the slot of their transpose.
-    for (int j = 0; j < n; ++j)
-      for (int q = outer[j]; q < outer[j + 1]; ++q)
-        if (const int i = inner[q]; i < j) codes_[q] = codes_[find(j, i)] + 1;
   }
-  diagonal_.assign(static_cast<std::size_t>(n), -1);
-  for (int i = 0; i < n; ++i)
-    if (const int q = find(i, i); q >= 0) diagonal_[i] = codes_[q] / 2;
+  cholmod_inner_.resize(static_cast<std::size_t>(slots));
+  cholmod_from_.resize(static_cast<std::size_t>(slots));
+  std::vector<int> next(cholmod_outer_.begin(), cholmod_outer_.end() - 1);
+  for (int r = 0; r < n; ++r)
+    for (int k = by_row_start[r]; k < by_row_start[r + 1]; ++k) {
+      const int s = by_row[k];
+      const int t = next[std::min(row_of[lower_inner_[s]], row_of[column_of[s]])]++;
+      cholmod_inner_[t] = r;
+      cholmod_from_[t] = s;
+    }
+}
+
+void TangentLayout::to_cholmod(const double* lower, double* out) const {
+  const int* from = cholmod_from_.data();
+  const std::size_t count = cholmod_from_.size();
+  for (std::size_t t = 0; t < count; ++t) out[t] = lower[from[t]];
 }
 
 TangentLayout::~TangentLayout() = default;

@@ -1,24 +1,31 @@
 #pragma once
-// Where the entries of the assembled tangent are stored (docs/performance.md, "What is assembled
-// for which solver").
+// Where the entries of the assembled tangent are stored, and the matrix CHOLMOD is handed
+// (docs/performance.md, "What is assembled for which solver").
 //
 // CHOLMOD's supernodal numeric factorization (cholmod_super_numeric) reads the lower triangle of
 // P K Pᵀ in compressed columns, P the fill-reducing ordering of its symbolic analysis. Handed the
-// lower triangle of K, cholmod_factorize builds that matrix with two transposes (one, handed the
-// upper triangle) at every factorization. TangentLayout runs CHOLMOD's symbolic analysis once on
-// the tangent's pattern and numbers the entries so that the assembly writes tril(P K Pᵀ) itself,
-// which the CHOLMOD solver hands to cholmod_super_numeric as it is:
+// lower triangle of K, cholmod_factorize builds that matrix at every factorization with two
+// transposes (cholmod_transpose_sym, allocating both), after the assembly has scattered both
+// triangles of a full K. TangentLayout runs CHOLMOD's symbolic analysis once on the tangent's
+// pattern and lays the tangent out in two arrays of one slot per pair {i, j} of the pattern:
 //
-// - each pair {i, j} of the pattern, i ≥ j in Tunica's equation numbering, has one slot s: the
-//   position of (max(pᵢ, pⱼ), min(pᵢ, pⱼ)) in tril(P K Pᵀ), pᵢ the row of P K Pᵀ that row i becomes;
-// - lower[s] holds K_ij, the entry of K's lower triangle: what CHOLMOD factorized when it was
-//   handed that triangle, so the factor does not change, bit for bit, whichever triangle of
-//   P K Pᵀ the entry lands in;
-// - upper[s] holds K_ji, at the same slot, when a consumer reads the upper triangle (the symmetry
-//   test of `auto`, UMFPACK and Eigen's LU through the full matrix, the symmetrized pressure
-//   stiffness, the bordered system of volume control); a diagonal slot has no upper value.
+// - the slots follow K's lower triangle in Tunica's numbering, column by column: the order of the
+//   mesh's nodes, in which an element's entries lie near those of the elements before it (the
+//   element loop writing straight into P K Pᵀ's order, which nested dissection spreads over the
+//   whole array, was measured slower than the two transposes it saves);
+// - lower[s] holds K_ij (i ≥ j), the entry of K's lower triangle: what CHOLMOD factorized when it
+//   was handed that triangle, so the factor is the same bit for bit;
+// - upper[s] holds K_ji, at the same slot, only where a consumer reads the upper triangle (the
+//   symmetry test of `auto`, which then compares the arrays in order; UMFPACK and Eigen's LU
+//   through the full matrix; the symmetrized pressure stiffness; the bordered system of volume
+//   control); a diagonal slot has no upper value;
+// - CHOLMOD is handed tril(P K Pᵀ) gathered from `lower` through a precomputed map (to_cholmod):
+//   one pass that reads each slot once, in place of the two transposes.
 //
-// An entry (i, j) is addressed by its code: 2s for lower[s], 2s + 1 for upper[s] (i < j).
+// The two arrays are one: values [0, S) are `lower`, [S, 2S) `upper` (S = slots()), and an entry
+// (i, j) is addressed by its code, its index there: s (i ≥ j) or S + s (i < j). The assembly adds
+// an element's K_e(a, b) at the code of (row of a, row of b), one add per entry as into a full
+// matrix; a tangent without the upper triangle stores [0, S) only and skips codes from S.
 #include <memory>
 #include <vector>
 
@@ -49,10 +56,17 @@ public:
   const SparseMatrix& pattern() const { return pattern_; }
   /// Per entry of pattern(), in its order: the entry's code (expands the split storage).
   const std::vector<int>& pattern_codes() const { return codes_; }
-  /// tril(P K Pᵀ) in compressed columns: the slots of column c are lower_outer()[c] …
-  /// lower_outer()[c + 1], rows ascending (the diagonal, where present, first).
+  /// The slots: K's lower triangle in compressed columns (Tunica's numbering); column j's slots are
+  /// lower_outer()[j] … lower_outer()[j + 1], rows ascending (the diagonal, where present, first).
   const std::vector<int>& lower_outer() const { return lower_outer_; }
   const std::vector<int>& lower_inner() const { return lower_inner_; }
+  /// CHOLMOD's matrix tril(P K Pᵀ) in compressed columns (rows ascending), and per entry of it the
+  /// slot its value comes from.
+  const std::vector<int>& cholmod_outer() const { return cholmod_outer_; }
+  const std::vector<int>& cholmod_inner() const { return cholmod_inner_; }
+  const std::vector<int>& cholmod_slots() const { return cholmod_from_; }
+  /// out[t] = lower[cholmod_slots()[t]]: the values of tril(P K Pᵀ) (slots() of them).
+  void to_cholmod(const double* lower, double* out) const;
   /// CHOLMOD's fill-reducing ordering P: row k of P K Pᵀ is row ordering()[k] of K.
   const std::vector<int>& ordering() const { return ordering_; }
   /// Per equation i (Tunica's numbering): the slot of K_ii, −1 if the pattern has none.
@@ -66,6 +80,7 @@ private:
   SparseMatrix pattern_;
   std::vector<int> codes_;
   std::vector<int> lower_outer_, lower_inner_;
+  std::vector<int> cholmod_outer_, cholmod_inner_, cholmod_from_;
   std::vector<int> diagonal_;
   std::vector<int> ordering_;
   std::unique_ptr<Cholmod> cholmod_;

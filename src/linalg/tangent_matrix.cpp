@@ -10,9 +10,8 @@ namespace tunica {
 TangentMatrix::TangentMatrix(SparseMatrix general) : general_(std::move(general)) { general_.makeCompressed(); }
 
 TangentMatrix::TangentMatrix(std::shared_ptr<const TangentLayout> layout, bool upper)
-    : layout_(std::move(layout)), lower_(static_cast<std::size_t>(layout_->slots()), 0.0) {
-  if (upper) upper_.assign(lower_.size(), 0.0);
-}
+    : layout_(std::move(layout)), values_(static_cast<std::size_t>(layout_->slots()) * (upper ? 2 : 1), 0.0),
+      upper_(upper) {}
 
 const TangentLayout& TangentMatrix::layout() const {
   if (!layout_) throw std::logic_error("TangentMatrix: a general matrix has no tangent layout");
@@ -30,21 +29,19 @@ const SparseMatrix& TangentMatrix::general() const {
 }
 
 void TangentMatrix::require_both(const char* what) const {
-  if (!layout_ || upper_.empty())
+  if (!layout_ || !has_upper())
     throw std::logic_error(std::string("TangentMatrix: ") + what + " needs a split tangent with both triangles");
 }
 
 void TangentMatrix::set_zero() {
-  std::fill(lower_.begin(), lower_.end(), 0.0);
-  std::fill(upper_.begin(), upper_.end(), 0.0);
+  std::fill(values_.begin(), values_.end(), 0.0);
   if (!layout_) general_.coeffs().setZero();
 }
 
 double TangentMatrix::max_abs() const {
   double m = 0;
   if (!layout_) return general_.nonZeros() ? general_.coeffs().abs().maxCoeff() : 0.0;
-  for (double v : lower_) m = std::max(m, std::abs(v));
-  for (double v : upper_) m = std::max(m, std::abs(v));
+  for (double v : values_) m = std::max(m, std::abs(v));
   return m;
 }
 
@@ -52,7 +49,7 @@ Eigen::VectorXd TangentMatrix::diagonal() const {
   if (!layout_) return general_.diagonal();
   const std::vector<int>& slot = layout_->diagonal_slots();
   Eigen::VectorXd d(layout_->size());
-  for (int i = 0; i < layout_->size(); ++i) d(i) = slot[i] >= 0 ? lower_[static_cast<std::size_t>(slot[i])] : 0.0;
+  for (int i = 0; i < layout_->size(); ++i) d(i) = slot[i] >= 0 ? values_[static_cast<std::size_t>(slot[i])] : 0.0;
   return d;
 }
 
@@ -65,15 +62,15 @@ void TangentMatrix::add_to_diagonal(const Eigen::VectorXd& d) {
   }
   const std::vector<int>& slot = layout_->diagonal_slots();
   for (int i = 0; i < layout_->size(); ++i)
-    if (slot[i] >= 0) lower_[static_cast<std::size_t>(slot[i])] += d(i);
+    if (slot[i] >= 0) values_[static_cast<std::size_t>(slot[i])] += d(i);
 }
 
 bool TangentMatrix::symmetric(double tolerance) const {
   require_both("the symmetry test");
   const int* outer = layout_->lower_outer().data();
   const int* inner = layout_->lower_inner().data();
-  const double* lo = lower_.data();
-  const double* up = upper_.data();
+  const double* lo = lower();
+  const double* up = upper();
   double scale = 0, diff = 0;
   for (int c = 0; c < layout_->size(); ++c) {
     int q = outer[c];
@@ -90,13 +87,12 @@ void TangentMatrix::symmetrize() {
   require_both("symmetrization");
   const int* outer = layout_->lower_outer().data();
   const int* inner = layout_->lower_inner().data();
+  double* lo = lower();
+  double* up = upper();
   for (int c = 0; c < layout_->size(); ++c) {
     int q = outer[c];
     if (q < outer[c + 1] && inner[q] == c) ++q;  // the diagonal stays
-    for (; q < outer[c + 1]; ++q) {
-      const double mean = 0.5 * (lower_[static_cast<std::size_t>(q)] + upper_[static_cast<std::size_t>(q)]);
-      lower_[static_cast<std::size_t>(q)] = upper_[static_cast<std::size_t>(q)] = mean;
-    }
+    for (; q < outer[c + 1]; ++q) lo[q] = up[q] = 0.5 * (lo[q] + up[q]);
   }
 }
 
@@ -113,12 +109,7 @@ void TangentMatrix::expand(SparseMatrix& out) const {
     out = pattern;
   const std::vector<int>& codes = layout_->pattern_codes();
   double* v = out.valuePtr();
-  const double* lo = lower_.data();
-  const double* up = upper_.data();
-  for (std::size_t q = 0; q < codes.size(); ++q) {
-    const int code = codes[q];
-    v[q] = (code & 1 ? up : lo)[code >> 1];
-  }
+  for (std::size_t q = 0; q < codes.size(); ++q) v[q] = values_[static_cast<std::size_t>(codes[q])];
 }
 
 }  // namespace tunica

@@ -1,7 +1,7 @@
 #pragma once
 // The matrix of a Newton correction's linear solve: either the assembled tangent in the split
-// storage of a TangentLayout (linalg/tangent_layout.hpp: the lower triangle as CHOLMOD
-// factorizes it, and the upper triangle at the same slots where a consumer reads it), or a general
+// storage of a TangentLayout (linalg/tangent_layout.hpp: the lower triangle, which CHOLMOD reads,
+// and the upper triangle at the same slots where a consumer reads it), or a general
 // sparse matrix (both triangles, compressed columns: the bordered system of volume control, a
 // test's matrix). The full matrix of a tangent is built only for a consumer that needs it (expand).
 #include <memory>
@@ -29,19 +29,21 @@ public:
   const TangentLayout& layout() const;
   const std::shared_ptr<const TangentLayout>& shared_layout() const { return layout_; }
   /// Whether the upper triangle is stored (always, for a general matrix).
-  bool has_upper() const { return !layout_ || !upper_.empty(); }
+  bool has_upper() const { return !layout_ || upper_; }
 
-  /// Split storage: the values by slot (TangentLayout); upper() is null where it is not stored.
-  double* lower() { return lower_.data(); }
-  const double* lower() const { return lower_.data(); }
-  double* upper() { return upper_.empty() ? nullptr : upper_.data(); }
-  const double* upper() const { return upper_.empty() ? nullptr : upper_.data(); }
+  /// Split storage: the values by code (TangentLayout), `lower` then `upper` where it is stored.
+  double* values() { return values_.data(); }
+  /// Codes below stored() are stored: the slots, or twice the slots with the upper triangle.
+  int stored() const { return static_cast<int>(values_.size()); }
+  /// The values by slot; upper() is null where it is not stored.
+  double* lower() { return values_.data(); }
+  const double* lower() const { return values_.data(); }
+  double* upper() { return layout_ && upper_ ? values_.data() + layout_->slots() : nullptr; }
+  const double* upper() const { return layout_ && upper_ ? values_.data() + layout_->slots() : nullptr; }
   /// Split storage: adds v to the entry of code `code` (TangentLayout::entry; nothing for −1, or for an
   /// upper entry where the upper triangle is not stored).
   void add(int code, double v) {
-    if (code < 0) return;
-    if (!(code & 1)) lower_[static_cast<std::size_t>(code >> 1)] += v;
-    else if (!upper_.empty()) upper_[static_cast<std::size_t>(code >> 1)] += v;
+    if (code >= 0 && code < stored()) values_[static_cast<std::size_t>(code)] += v;
   }
   /// A general matrix's storage (std::logic_error for a split tangent).
   SparseMatrix& general();
@@ -72,7 +74,8 @@ private:
   void require_both(const char* what) const;
 
   std::shared_ptr<const TangentLayout> layout_;
-  std::vector<double> lower_, upper_;
+  std::vector<double> values_;  // split storage: lower, then upper where stored
+  bool upper_ = false;
   SparseMatrix general_;
 };
 

@@ -1,7 +1,7 @@
 // The tangent's split storage (linalg/tangent_layout.hpp, linalg/tangent_matrix.hpp): the lower
-// triangle assembled as tril(P K Pᵀ) in CHOLMOD's ordering, the upper one beside it.
-// - every entry of the pattern has its slot, in the lower triangle of the permuted matrix, and the
-//   full matrix expands from the two arrays entry for entry;
+// triangle, the upper one beside it, and CHOLMOD's tril(P K Pᵀ) gathered from the lower one.
+// - every entry of the pattern has its slot, the full matrix expands from the two arrays entry for
+//   entry, and CHOLMOD's tril(P K Pᵀ) gathers from the lower one;
 // - CHOLMOD factorizes the split lower triangle as cholmod_factorize factorized K's lower
 //   triangle: the same solution bit for bit;
 // - every solver solves the same assembled tangent to 1e-10;
@@ -45,7 +45,7 @@ const TubeState& tube() {
   return state;
 }
 
-TEST(SplitTangent, EveryEntryHasOneSlotInTheLowerTriangleOfThePermutedMatrix) {
+TEST(SplitTangent, EveryEntryHasOneSlotAndCholmodGetsTheLowerTriangleOfThePermutedMatrix) {
   const System& system = tube().system();
   const TangentLayout& layout = *system.layout();
   const int n = system.num_free();
@@ -60,28 +60,43 @@ TEST(SplitTangent, EveryEntryHasOneSlotInTheLowerTriangleOfThePermutedMatrix) {
   const SparseMatrix full = T.full();
   ASSERT_EQ(full.nonZeros(), A.nonZeros());
   for (Eigen::Index k = 0; k < A.nonZeros(); ++k) ASSERT_EQ(full.valuePtr()[k], A.valuePtr()[k]) << k;
-  // Column c of the lower arrays is column c of tril(P A Pᵀ), rows ascending from the diagonal;
-  // lower holds A's lower-triangle entry (i ≥ j), upper its transpose.
-  const std::vector<int>& P = layout.ordering();
+  // The slots are A's lower triangle column by column, rows ascending from the diagonal: lower
+  // holds A_ij (i ≥ j), upper A_ji.
   const std::vector<int>& outer = layout.lower_outer();
   const std::vector<int>& inner = layout.lower_inner();
   int diagonal = 0;
-  for (int c = 0; c < n; ++c)
-    for (int q = outer[c]; q < outer[c + 1]; ++q) {
-      const int r = inner[q];
-      ASSERT_GE(r, c);
-      if (q > outer[c]) {
-        ASSERT_GT(r, inner[q - 1]);
+  for (int j = 0; j < n; ++j)
+    for (int s = outer[j]; s < outer[j + 1]; ++s) {
+      const int i = inner[s];
+      ASSERT_GE(i, j);
+      if (s > outer[j]) {
+        ASSERT_GT(i, inner[s - 1]);
       }
-      const int i = std::max(P[r], P[c]), j = std::min(P[r], P[c]);
-      ASSERT_EQ(T.lower()[q], A.coeff(i, j)) << r << ", " << c;
-      if (r == c) {
+      ASSERT_EQ(T.lower()[s], A.coeff(i, j)) << i << ", " << j;
+      if (i == j) {
         ++diagonal;
       } else {
-        ASSERT_EQ(T.upper()[q], A.coeff(j, i)) << r << ", " << c;
+        ASSERT_EQ(T.upper()[s], A.coeff(j, i)) << i << ", " << j;
       }
     }
   EXPECT_EQ(2L * layout.slots() - diagonal, static_cast<long>(A.nonZeros()));
+  // CHOLMOD's matrix: column c is column c of tril(P A Pᵀ), rows ascending, built from A's lower
+  // triangle (the entries CHOLMOD read when it was handed that triangle).
+  std::vector<double> cholmod(static_cast<std::size_t>(layout.slots()));
+  layout.to_cholmod(T.lower(), cholmod.data());
+  const std::vector<int>& P = layout.ordering();
+  const std::vector<int>& c_outer = layout.cholmod_outer();
+  const std::vector<int>& c_inner = layout.cholmod_inner();
+  ASSERT_EQ(c_outer[n], layout.slots());
+  for (int c = 0; c < n; ++c)
+    for (int t = c_outer[c]; t < c_outer[c + 1]; ++t) {
+      const int r = c_inner[t];
+      ASSERT_GE(r, c);
+      if (t > c_outer[c]) {
+        ASSERT_GT(r, c_inner[t - 1]);
+      }
+      ASSERT_EQ(cholmod[t], A.coeff(std::max(P[r], P[c]), std::min(P[r], P[c]))) << r << ", " << c;
+    }
   const Eigen::VectorXd d = A.diagonal();
   EXPECT_EQ(T.diagonal(), d);
 }
@@ -138,7 +153,7 @@ TEST(SplitTangent, AutoSendsAnUnsymmetricTangentToUmfpackWithBothTriangles) {
   ASSERT_TRUE(solver->factorize(K));
   EXPECT_STREQ(solver->used(), "cholmod");
   // One off-diagonal entry of either triangle made unsymmetric beyond the tolerance.
-  const int slot = K.layout().lower_outer()[0] + 1;  // column 0's first entry below the diagonal
+  const int slot = K.layout().lower_outer()[0] + 1;  // column 0's first slot below the diagonal
   ASSERT_NE(K.layout().lower_inner()[slot], 0);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(K.rows());
   for (const bool in_upper : {true, false}) {
