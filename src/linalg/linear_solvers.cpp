@@ -44,10 +44,10 @@ private:
   const char* name_;
 };
 
-/// CHOLMOD's supernodal LLᵀ. Of a split tangent it reads the lower triangle, gathered into
-/// tril(P K Pᵀ) in the ordering of its layout's symbolic analysis (linalg/tangent_layout.hpp), the
-/// matrix cholmod_super_numeric factorizes, into a copy of that analysis: where cholmod_factorize
-/// would permute and transpose K's lower triangle twice to build it. The factor and the solve
+/// CHOLMOD's supernodal LLᵀ. A split tangent's lower triangle is gathered into tril(P K Pᵀ), P the
+/// ordering of its layout's symbolic analysis (linalg/tangent_layout.hpp), which
+/// cholmod_super_numeric factorizes into a copy of that analysis; cholmod_factorize would build
+/// the same matrix from K's lower triangle with two transposes. The factor and the solve
 /// (cholmod_solve with the layout's P) are those of cholmod_factorize, bit for bit. A general
 /// matrix (both triangles) goes through Eigen's wrapper, its lower triangle factorized, its
 /// analysis on the first call.

@@ -10,9 +10,9 @@
 // pattern and lays the tangent out in two arrays of one slot per pair {i, j} of the pattern:
 //
 // - the slots follow K's lower triangle in Tunica's numbering, column by column: the order of the
-//   mesh's nodes, in which an element's entries lie near those of the elements before it (the
-//   element loop writing straight into P K Pᵀ's order, which nested dissection spreads over the
-//   whole array, was measured slower than the two transposes it saves);
+//   mesh's nodes, in which an element's entries lie near those of the elements before it. In
+//   P K Pᵀ's order, over which nested dissection spreads a mesh neighbourhood, the element loop
+//   would write all over the array, and its cache misses cost more than the transposes saved;
 // - lower[s] holds K_ij (i ≥ j), the entry of K's lower triangle: what CHOLMOD factorized when it
 //   was handed that triangle, so the factor is the same bit for bit;
 // - upper[s] holds K_ji, at the same slot, only where a consumer reads the upper triangle (the
