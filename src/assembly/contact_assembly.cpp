@@ -18,18 +18,6 @@ ContactPoint rigid_contact(const RigidSurface& r, const Eigen::Vector2d& xs, dou
                                                 : rigid_polyline_contact(r.polyline, xs, area, law, f, K);
 }
 
-/// Index of entry (i, j) in the values of a compressed-column matrix; −1 if i or j is prescribed.
-/// Throws std::logic_error if the entry is not in the pattern.
-int entry(const SparseMatrix& K, int i, int j) {
-  if (i < 0 || j < 0) return -1;
-  const int* inner = K.innerIndexPtr();
-  const int* begin = inner + K.outerIndexPtr()[j];
-  const int* end = inner + K.outerIndexPtr()[j + 1];
-  const int* it = std::lower_bound(begin, end, i);
-  if (it == end || *it != i) throw std::logic_error("contact: an entry of a contact element is missing from the pattern");
-  return static_cast<int>(it - inner);
-}
-
 /// The contact element of one slave node of a deformable pair: the slave and up to four master
 /// chain indices (−1: unused), f (10) and K (10×10) in that order (r, z per node), the state.
 struct DeformableContactElement {
@@ -86,7 +74,7 @@ void ContactAssembly::add_couplings(const Model& m, std::vector<std::vector<int>
   }
 }
 
-ContactAssembly::ContactAssembly(const Model& m, const std::vector<int>& eq, const SparseMatrix& pattern)
+ContactAssembly::ContactAssembly(const Model& m, const std::vector<int>& eq, const TangentLayout& layout)
     : model_(m), eq_(eq) {
   // The latest enter_step among the parts holding each node, then per pair over its nodes.
   std::vector<int> node_enter(m.num_nodes(), 0);
@@ -105,7 +93,7 @@ ContactAssembly::ContactAssembly(const Model& m, const std::vector<int>& eq, con
       for (int node : pair.nodes) {
         std::array<int, 4> q{};
         for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 2; ++b) q[2 * a + b] = entry(pattern, eq_[2 * node + a], eq_[2 * node + b]);
+          for (int b = 0; b < 2; ++b) q[2 * a + b] = layout.entry(eq_[2 * node + a], eq_[2 * node + b]);
         pos.push_back(q);
       }
     rigid_pos_.push_back(std::move(pos));
@@ -119,7 +107,7 @@ Eigen::Matrix2Xd ContactAssembly::current_chain(const std::vector<int>& nodes, c
   return chain;
 }
 
-void ContactAssembly::assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, SparseMatrix* K,
+void ContactAssembly::assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, TangentMatrix* K,
                                double& scale2, int& active, std::vector<char>* active_set) const {
   if (active_set) {
     std::size_t n = 0;
@@ -137,7 +125,7 @@ void ContactAssembly::assemble(const Eigen::VectorXd& u, int step, Eigen::Vector
   }
 }
 
-void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
+void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K,
                                      double& scale2, int& active, char* flags) const {
   const ContactPair& pair = model_.contacts[c];
   const RigidSurface& rigid = model_.rigid_surfaces[pair.rigid];
@@ -154,15 +142,12 @@ void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::Vec
     scale2 += f.squaredNorm();
     // The gap is a difference of coordinates: its round-off is ~ε_mach |x_s|, times the penalty stiffness.
     if (K) scale2 += Kc.squaredNorm() * xs.squaredNorm();
-    if (K) {
-      double* values = K->valuePtr();
-      for (int q = 0; q < 4; ++q)
-        if (const int pos = rigid_pos_[c][k][q]; pos >= 0) values[pos] += Kc(q / 2, q % 2);
-    }
+    if (K)
+      for (int q = 0; q < 4; ++q) K->add(rigid_pos_[c][k][q], Kc(q / 2, q % 2));
   }
 }
 
-void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K,
+void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K,
                                           double& scale2, int& active, char* flags) const {
   const ContactPair& pair = model_.contacts[c];
   const Eigen::Matrix2Xd chain = current_chain(pair.master, u);
@@ -186,14 +171,13 @@ void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen
     if (!K) continue;
     // The gap is a difference of the nodes' coordinates: round-off ~ε_mach max |x|.
     scale2 += e.K.squaredNorm() * x2;
-    double* values = K->valuePtr();
+    const TangentLayout& layout = K->layout();
     for (int b = 0; b < 10; ++b) {
       if (nodes[b / 2] < 0) continue;
       const int j = eq_[2 * nodes[b / 2] + b % 2];
       if (j < 0) continue;
       for (int a = 0; a < 10; ++a)
-        if (nodes[a / 2] >= 0)
-          if (const int pos = entry(*K, eq_[2 * nodes[a / 2] + a % 2], j); pos >= 0) values[pos] += e.K(a, b);
+        if (nodes[a / 2] >= 0) K->add(layout.entry(eq_[2 * nodes[a / 2] + a % 2], j), e.K(a, b));
     }
   }
 }

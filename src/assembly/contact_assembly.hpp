@@ -28,8 +28,8 @@
 #include <array>
 #include <vector>
 
-#include "linalg/sparse_matrix.hpp"
 #include "contact/axisym_contact.hpp"
+#include "linalg/tangent_matrix.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
@@ -51,17 +51,17 @@ public:
   /// its coupled nodes, unsorted): every slave with every master node, consecutive master nodes.
   static void add_couplings(const Model& m, std::vector<std::vector<int>>& adjacent);
 
-  /// Scatter positions of the rigid pairs' slave blocks in `pattern` (equation numbers `eq`, −1:
-  /// prescribed). Throws std::logic_error if the pattern lacks an entry.
-  ContactAssembly(const Model& m, const std::vector<int>& eq, const SparseMatrix& pattern);
+  /// Codes of the rigid pairs' slave blocks in `layout` (TangentLayout::entry; equation numbers
+  /// `eq`, −1: prescribed). Throws std::logic_error if the pattern lacks an entry.
+  ContactAssembly(const Model& m, const std::vector<int>& eq, const TangentLayout& layout);
 
-  /// R += f and, if K is given (the pattern's structure), K += ∂f/∂u for every active slave node;
+  /// R += f and, if K is given (a split tangent of the layout), K += ∂f/∂u for every active slave node;
   /// scale2 += ‖f‖² + (‖K_c‖ |x|)² (round-off yardstick: the gap is a difference of coordinates);
   /// active += the number of active slave nodes; `active_set`, if given, is set to whether each
   /// slave node (pairs in order, nodes in pair order) is active.
   /// Pairs touching a part that has not entered by `step` (0-based, Model::part_active) are skipped
   /// (their nodes inactive).
-  void assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
+  void assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, TangentMatrix* K, double& scale2,
                 int& active, std::vector<char>* active_set = nullptr) const;
   /// Whether pair `c` takes part in step `step`: every part holding one of its slave or master
   /// nodes has entered.
@@ -76,17 +76,17 @@ public:
 
 private:
   /// `flags`, if given: one per slave node of pair c, set to 1 for the active ones.
-  void assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
+  void assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K, double& scale2,
                       int& active, char* flags) const;
-  void assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K, double& scale2,
+  void assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K, double& scale2,
                            int& active, char* flags) const;
   /// Current positions of a chain of nodes (columns (r, z)).
   Eigen::Matrix2Xd current_chain(const std::vector<int>& nodes, const Eigen::VectorXd& u) const;
 
   const Model& model_;
   std::vector<int> eq_;
-  /// Per rigid pair (empty for deformable ones), per slave node: positions of its 2×2 block
-  /// (rr, rz, zr, zz) in K's values (−1: not free-free).
+  /// Per rigid pair (empty for deformable ones), per slave node: the codes of its 2×2 block
+  /// (rr, rz, zr, zz) (TangentLayout::entry; −1: not free-free).
   std::vector<std::vector<std::array<int, 4>>> rigid_pos_;
   /// Per pair: the step from which it is active (the latest enter_step of the parts it touches).
   std::vector<int> pair_enter_;

@@ -58,19 +58,17 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     adj.clear();
     adj.shrink_to_fit();
   }
-  pattern_.resize(num_free_, num_free_);
-  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
-  std::fill(pattern_.valuePtr(), pattern_.valuePtr() + inner.size(), 0.0);
-  pattern_.makeCompressed();
-
-  // Scatter positions: index of (i, j) in the CSC value array; each block's contribution.
-  auto position = [&](int i, int j) {
-    const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[j];
-    const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[j + 1];
-    return static_cast<int>(std::lower_bound(begin, end, i) - pattern_.innerIndexPtr());
-  };
+  {
+    SparseMatrix pattern(num_free_, num_free_);
+    pattern.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+    std::copy(outer.begin(), outer.end(), pattern.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), pattern.innerIndexPtr());
+    std::fill(pattern.valuePtr(), pattern.valuePtr() + inner.size(), 0.0);
+    pattern.makeCompressed();
+    std::vector<int>().swap(inner);
+    // CHOLMOD's symbolic analysis, once: the storage the tangent is assembled in.
+    layout_ = std::make_shared<const TangentLayout>(std::move(pattern));
+  }
   blocks_.resize(model.parts.size());
   extent_.assign(model.parts.size(), 0.0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -89,13 +87,13 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
       BlockLayout layout;
       const int ndn = type.unknowns_per_node, nd = type.nodes * ndn;
       layout.scatter.resize(static_cast<std::size_t>(block.size()) * nd * nd);
-      int* pos = layout.scatter.data();
+      int* code = layout.scatter.data();
       for (int e = 0; e < block.size(); ++e) {
         const int* en = block.element(e);
         for (int a = 0; a < nd; ++a)
           for (int b = 0; b < nd; ++b) {
             const int i = eq_[model.node_dof(en[a / ndn], a % ndn)], j = eq_[model.node_dof(en[b / ndn], b % ndn)];
-            *pos++ = (i >= 0 && j >= 0) ? position(i, j) : -1;
+            *code++ = layout_->entry(i, j);
           }
       }
       colour_elements(block, model.num_nodes(), layout.order, layout.colour_start);
@@ -111,7 +109,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
 
   // Contact: rigid pairs' slave blocks are in the pattern (every node couples with itself),
   // deformable pairs' contact elements by the couplings added above.
-  contact_ = std::make_unique<ContactAssembly>(model, eq_, pattern_);
+  contact_ = std::make_unique<ContactAssembly>(model, eq_, *layout_);
 
   // Parts that enter later: the step from which each DOF may move, and the held free DOFs.
   dof_enter_.assign(n, 0);
@@ -125,7 +123,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
       for (int c = 0; c < model.node_dof_count(node); ++c) {
         const int d = model.node_dof(node, c);
         dof_enter_[d] = std::max(0, node_enter[node]);
-        if (dof_enter_[d] > 0 && eq_[d] >= 0) held_.push_back({d, position(eq_[d], eq_[d]), 1.0});
+        if (dof_enter_[d] > 0 && eq_[d] >= 0) held_.push_back({d, layout_->entry(eq_[d], eq_[d]), 1.0});
       }
   }
   if (!held_.empty()) compute_hold_stiffness();
@@ -143,11 +141,11 @@ void System::compute_hold_stiffness() {
   for (auto& h : held_) h.k = diag(h.dof) > 0 ? diag(h.dof) : (largest > 0 ? largest : 1.0);
 }
 
-void System::assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K) const {
+void System::assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K) const {
   for (const auto& h : held_) {
     if (!held(h.dof, step)) continue;
     R(h.dof) += h.k * u(h.dof);
-    if (K) K->valuePtr()[h.pos] += h.k;
+    if (K) K->add(h.pos, h.k);
   }
 }
 
@@ -194,13 +192,13 @@ void System::apply_boundary(const LoadState& loads, Eigen::VectorXd& u) const {
   }
 }
 
-void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
+void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, TangentMatrix* K,
                       double* force_scale, int* active_contacts, std::vector<char>* active_set) const {
   R.setZero(num_dofs());
   double scale2 = 0;
   if (K) {
-    if (K->nonZeros() != pattern_.nonZeros()) *K = pattern_;
-    std::fill(K->valuePtr(), K->valuePtr() + K->nonZeros(), 0.0);
+    if (K->shared_layout() != layout_) *K = tangent(true);
+    else K->set_zero();
   }
   const std::vector<double> pressure = part_pressures(loads);
 
@@ -218,6 +216,13 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   if (force_scale) *force_scale = std::sqrt(scale2);
 }
 
+void System::assemble_full(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix& K,
+                           double* force_scale, int* active_contacts, std::vector<char>* active_set) const {
+  TangentMatrix T = tangent(true);
+  assemble(u, loads, R, &T, force_scale, active_contacts, active_set);
+  T.expand(K);
+}
+
 std::vector<double> System::part_pressures(const LoadState& loads) const {
   std::vector<double> pressure(model_.parts.size(), 0.0);
   for (std::size_t l = 0; l < model_.loads.size(); ++l)
@@ -225,7 +230,7 @@ std::vector<double> System::part_pressures(const LoadState& loads) const {
   return pressure;
 }
 
-Eigen::VectorXd System::add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, SparseMatrix& K) const {
+Eigen::VectorXd System::add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, TangentMatrix& K) const {
   Eigen::VectorXd Kd = Eigen::VectorXd::Zero(num_dofs());
   const std::vector<double> pressure = part_pressures(loads);
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {

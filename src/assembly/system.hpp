@@ -10,6 +10,13 @@
 // enter later, and the contact pairs. System does not dispatch on the element kind: it asks the
 // kind's registered type for its nodes and unknowns per node.
 //
+// K is assembled in the split storage of a TangentLayout (linalg/tangent_layout.hpp), built once
+// with the pattern, with CHOLMOD's symbolic analysis: the lower triangle, from which CHOLMOD's
+// tril(P K Pᵀ) is gathered without a transpose, and the upper triangle beside it only where the
+// consumer reads it (TangentMatrix's `upper`: the symmetry test of `auto`, UMFPACK, the
+// symmetrized tangent, volume control's bordered system). The full matrix is expanded from the
+// two only for a consumer that needs it (assemble_full, TangentMatrix::expand).
+//
 // Parts that enter in a later step (Part::enter_step, Model::part_active): while a
 // part is inactive its elements, the pressure loads on it and its contact pairs are
 // skipped, and each free DOF of a node that only inactive parts use is held at its
@@ -31,6 +38,7 @@
 #include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"
 #include "linalg/sparse_matrix.hpp"
+#include "linalg/tangent_matrix.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
@@ -56,7 +64,9 @@ public:
 
   /// Sets the prescribed DOFs of u to the boundary values of `loads`.
   void apply_boundary(const LoadState& loads, Eigen::VectorXd& u) const;
-  /// Full residual R (num_dofs) and, if K is given, the free-DOF tangent with the fixed pattern.
+  /// Full residual R (num_dofs) and, if K is given, the free-DOF tangent in the split storage of
+  /// layout() (K's upper triangle if K stores one; a K of another layout, or a general one, is
+  /// replaced by a tangent with both triangles).
   /// `force_scale`, if given, receives a yardstick for round-off in R: sqrt(Σ_e ‖f_int,e‖² +
   /// ‖f_ext,e‖² + (‖K_e‖ L_e)²), the forces that cancel in R and, when K is assembled, the
   /// stiffness × element size that bounds round-off of stresses computed near zero strain.
@@ -65,9 +75,14 @@ public:
   /// and ‖f_c‖² + (‖K_c‖ |x|)² to the yardstick (the gap is a difference of coordinates);
   /// `active_contacts`, if given, receives the number of active slave nodes (all pairs), and
   /// `active_set` whether each slave node is active (pairs in order, nodes in pair order).
-  void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix* K,
+  void assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, TangentMatrix* K,
                 double* force_scale = nullptr, int* active_contacts = nullptr,
                 std::vector<char>* active_set = nullptr) const;
+  /// assemble() with the full free-DOF tangent K (both triangles, compressed columns, the pattern of
+  /// pattern()), for a consumer that reads K entry by entry.
+  void assemble_full(const Eigen::VectorXd& u, const LoadState& loads, Eigen::VectorXd& R, SparseMatrix& K,
+                     double* force_scale = nullptr, int* active_contacts = nullptr,
+                     std::vector<char>* active_set = nullptr) const;
   /// The first Newton correction from a stress-free state (theory manual §7.2, (7.6)–(7.8);
   /// solver/tangent_hooks.hpp):
   /// adds to K (free DOFs) the normal-tension stiffness K₀ (elements/start_tension.hpp) of every
@@ -76,7 +91,7 @@ public:
   /// (twice Laplace's p/2H; H_e the element's mean curvature, model/surface_curvature.hpp; L the
   /// diagonal of the part's bounding box, which caps T₀ on flat regions), and returns K₀ d
   /// (all DOFs; d over all DOFs, or empty for none).
-  Eigen::VectorXd add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, SparseMatrix& K) const;
+  Eigen::VectorXd add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, TangentMatrix& K) const;
   /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
   /// pair's node order; inactive while the pair waits for one of its parts to enter.
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
@@ -86,8 +101,12 @@ public:
   /// V = π ∫ r² dz along the meridian, (6.7), on a shell's Hermite curve (11.5)) and, if
   /// `grad` is given, ∂V/∂u (all DOFs).
   double volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad = nullptr) const;
-  /// A zero matrix with the tangent's pattern.
-  const SparseMatrix& pattern() const { return pattern_; }
+  /// A zero matrix with the tangent's pattern (both triangles).
+  const SparseMatrix& pattern() const { return layout_->pattern(); }
+  /// Where the tangent's entries are stored (linalg/tangent_layout.hpp).
+  const std::shared_ptr<const TangentLayout>& layout() const { return layout_; }
+  /// A zero tangent in layout()'s split storage, with the upper triangle if `upper`.
+  TangentMatrix tangent(bool upper) const { return TangentMatrix(layout_, upper); }
   /// Gauss-point states of every element of a membrane part, block by block, element by element
   /// (empty for a solid part).
   std::vector<MembranePoint> points(const Eigen::VectorXd& u, int part) const;
@@ -104,7 +123,7 @@ private:
   /// Pressure on each part: the sum of the loads acting on it, with their sides.
   std::vector<double> part_pressures(const LoadState& loads) const;
   /// Holds the free DOFs of nodes of inactive parts: R_i += k_i u_i, K_ii += k_i.
-  void assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, SparseMatrix* K) const;
+  void assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K) const;
   /// k_i of the held DOFs: the diagonal of the tangent at u = 0 of the parts that enter later.
   void compute_hold_stiffness();
 
@@ -113,12 +132,12 @@ private:
   std::vector<int> eq_;
   std::vector<int> prescribed_;
   int num_free_ = 0;
-  SparseMatrix pattern_;
+  std::shared_ptr<const TangentLayout> layout_;
   std::vector<std::vector<std::unique_ptr<BlockContribution>>> blocks_;  ///< per part, per block
   std::vector<double> extent_;              ///< per part: the diagonal of its reference bounding box
   /// Per DOF: the step from which it is free to move (the lowest enter_step of the parts using its node; 0 if none).
   std::vector<int> dof_enter_;
-  /// Free DOFs that may be held: DOF, position of K_ii in K's values, k_i.
+  /// Free DOFs that may be held: DOF, code of K_ii (TangentLayout::entry), k_i.
   struct HeldDof {
     int dof = -1, pos = -1;
     double k = 1;

@@ -81,14 +81,14 @@ public:
     agree("unknowns per node", Kernel::kUnknowns, type.unknowns_per_node, "the registration");
     agree("solid", Kernel::kSolid, type.solid, "the registration");
     agree("pressure", Kernel::kPressure, type.pressure, "the registration");
-    agree("scatter positions per element", kDofs * kDofs,
+    agree("scatter codes per element", kDofs * kDofs,
           block_.size() ? static_cast<long>(layout_.scatter.size()) / block_.size() : kDofs * kDofs, "the layout");
     if (Kernel::kStartStiffness)
       agree("curvatures (one per element)", block_.size(), static_cast<long>(curvature_.size()), "the context");
     if (!wrong.empty()) throw std::logic_error("element type " + type.name + " disagrees with itself" + wrong);
   }
 
-  void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
+  void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
                 double& scale2) const override {
     std::vector<double> scale_e(block_.size());  // per element: summed in element order, whatever the threads
     for_each_coloured(layout_, [&](int e) {
@@ -158,7 +158,7 @@ public:
   }
 
   void start_stiffness(double abs_pressure, double cap, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
-                       SparseMatrix& K) const override {
+                       TangentMatrix& K) const override {
     if constexpr (Kernel::kStartStiffness) {
       for_each_coloured(layout_, [&](int e) {
         // T₀ = |p| / max(|H_e|, cap), theory manual (7.7).
@@ -216,15 +216,19 @@ private:
     }
   }
 
-  /// R(dof a) += f(a); K's values at the scatter positions += K_e.
-  void scatter(const int* en, const Vector& f, const Matrix* Ke, const int* pos, Eigen::VectorXd& R,
-               SparseMatrix* K) const {
+  /// R(dof a) += f(a); K += K_e through the element's codes (BlockLayout): K_e(a, b) is added to
+  /// the split storage at its code, those of the upper triangle only where it is stored. Every entry
+  /// of K receives one term per element, in the elements' order, as a full matrix's entry would.
+  void scatter(const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
+               TangentMatrix* K) const {
     for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
     if (!K) return;
-    double* values = K->valuePtr();
+    double* values = K->values();
+    // Unsigned: −1 (not free-free) is beyond the stored codes as well.
+    const unsigned stored = static_cast<unsigned>(K->stored());
     for (int a = 0; a < kDofs; ++a)
       for (int b = 0; b < kDofs; ++b)
-        if (const int k = pos[a * kDofs + b]; k >= 0) values[k] += (*Ke)(a, b);
+        if (const unsigned k = static_cast<unsigned>(code[a * kDofs + b]); k < stored) values[k] += (*Ke)(a, b);
   }
 
   const Model& model_;

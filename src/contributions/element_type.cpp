@@ -16,7 +16,7 @@ std::map<ElementKind, ElementType>& registry() {
 
 }  // namespace
 
-void BlockContribution::start_stiffness(double, double, const Eigen::VectorXd&, Eigen::VectorXd&, SparseMatrix&) const {}
+void BlockContribution::start_stiffness(double, double, const Eigen::VectorXd&, Eigen::VectorXd&, TangentMatrix&) const {}
 void BlockContribution::membrane_points(const Eigen::VectorXd&, std::vector<MembranePoint>&) const {}
 void BlockContribution::solid_points(const Eigen::VectorXd&, std::vector<SolidPoint>&) const {}
 

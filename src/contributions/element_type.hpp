@@ -20,14 +20,17 @@
 
 #include "elements/axisym_solid.hpp"
 #include "elements/membrane_point.hpp"
-#include "linalg/sparse_matrix.hpp"
+#include "linalg/tangent_matrix.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
 
-/// What System computes once for a block, generically: the scatter positions and the colouring.
+/// What System computes once for a block, generically: the scatter codes and the colouring.
 struct BlockLayout {
-  std::vector<int> scatter;       ///< per element, (n·d)² positions in K's value array (−1: not free-free)
+  /// Per element, (n·d)² codes, row by row: where K_e(a, b) is added, TangentLayout::entry of
+  /// (row of a, row of b) (linalg/tangent_layout.hpp: an index into the split storage, its lower
+  /// triangle first; −1: not free-free).
+  std::vector<int> scatter;
   std::vector<int> order;         ///< element indices, colour by colour (no two of a colour share a node)
   std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])
 };
@@ -51,7 +54,7 @@ public:
   /// the follower pressure `pressure` on the elements' surface (theory manual §6); returns the
   /// round-off yardstick Σ_e ‖f_int,e‖² + ‖f_p,e‖² (+ ‖K_e‖² L_e² when K is assembled), summed in
   /// element order whatever the number of threads, into scale2.
-  virtual void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, SparseMatrix* K,
+  virtual void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
                         double& scale2) const = 0;
   /// g += ∂f_ext/∂p, the external force per unit pressure of sign `sign` (all DOFs).
   virtual void pressure_load(const Eigen::VectorXd& u, double sign, Eigen::VectorXd& g) const = 0;
@@ -63,7 +66,7 @@ public:
   /// The stress-free start's normal-tension stiffness (theory manual (7.6)–(7.8)) for pressure |p|
   /// and curvature floor `cap`: K += K₀ and Kd += K₀ d (d all DOFs, or empty). None by default.
   virtual void start_stiffness(double abs_pressure, double cap, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
-                               SparseMatrix& K) const;
+                               TangentMatrix& K) const;
   /// Appends the Gauss-point states of every element (membranes and shells; none for solids).
   virtual void membrane_points(const Eigen::VectorXd& u, std::vector<MembranePoint>& out) const;
   /// Appends the Gauss-point states of every element (solids; none for membranes).

@@ -2,14 +2,17 @@
 // Linear solvers behind one interface, registered by name: the deck's `solver.linear_solver`
 // takes its choices from the registry, and the deck reference lists them with their one-line
 // descriptions (`tunica reference`; the shipped ones are in linalg/linear_solvers.cpp). The
-// symbolic analysis is done once per pattern and reused by every numeric factorization.
+// symbolic analysis is done once per pattern and reused by every numeric factorization. A solver
+// is handed the assembled tangent in split storage (linalg/tangent_matrix.hpp: the lower triangle,
+// from which CHOLMOD's tril(P K Pᵀ) is gathered, and the upper one beside it if the solver reads
+// it) or a general matrix; one that wants the full matrix expands it (TangentMatrix::expand).
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "linalg/sparse_matrix.hpp"
+#include "linalg/tangent_matrix.hpp"
 
 namespace tunica {
 
@@ -18,8 +21,9 @@ public:
   virtual ~LinearSolver() = default;
   /// Numeric factorization; the symbolic analysis is done on the first call and
   /// reused (the pattern of K never changes). Returns false if K is singular
-  /// (or, for cholmod, not positive definite).
-  virtual bool factorize(const SparseMatrix& K) = 0;
+  /// (or, for cholmod, not positive definite). K may be a temporary: a solver that reads it again
+  /// in solve() keeps a copy.
+  virtual bool factorize(const TangentMatrix& K) = 0;
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) = 0;
   /// The solver that did the last factorization ("cholmod", "umfpack", "sparse_lu").
   virtual const char* used() const = 0;
@@ -27,6 +31,10 @@ public:
   /// some matrices (symmetric, positive definite) names what it needs and which solver takes
   /// the rest. Empty: false means singular. Newton's failure message quotes it.
   virtual std::string refusal() const { return ""; }
+  /// Whether factorize() reads the upper triangle of a split tangent. A solver that reads the lower
+  /// one only (CHOLMOD) says false, and the assembly then leaves the upper one out
+  /// (solver/increment.cpp).
+  virtual bool reads_upper() const { return true; }
 };
 
 /// A linear solver a deck can name.

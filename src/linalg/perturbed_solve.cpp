@@ -11,13 +11,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
+bool solve_perturbed(LinearSolver& solver, const TangentMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
                      double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
                      double& solve_seconds) {
   note.clear();
   factor_seconds = solve_seconds = 0;
   // 0: singular (failed factorization or a non-finite x); 1: x beyond max_step; 2: fine.
-  const auto attempt = [&](const SparseMatrix& A) {
+  const auto attempt = [&](const TangentMatrix& A) {
     auto t = std::chrono::steady_clock::now();
     const bool regular = solver.factorize(A);
     factor_seconds += seconds_since(t);
@@ -32,12 +32,11 @@ bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::V
   if (plain == 2) return true;
   if (!allow_shift) return plain == 1;
   note = "+shift";
-  const double largest = M.diagonal().cwiseAbs().maxCoeff();
+  const Eigen::VectorXd diagonal = M.diagonal();
+  const double largest = diagonal.cwiseAbs().maxCoeff();
   for (double delta : {1e-6, 1e-4, 1e-2}) {
-    SparseMatrix S = M;
-    for (int j = 0; j < S.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(S, j); it; ++it)
-        if (it.row() == j) it.valueRef() += delta * (it.value() != 0 ? std::abs(it.value()) : largest);
+    TangentMatrix S = M;
+    S.add_to_diagonal(diagonal.unaryExpr([&](double v) { return delta * (v != 0 ? std::abs(v) : largest); }));
     if (attempt(S) == 2) return true;
   }
   return false;

@@ -16,7 +16,7 @@ namespace tunica {
 /// unstressed flat region), which the stress of the next iterates stiffens. `note` is "+shift"
 /// when the perturbation was used; the seconds of all attempts are added up. False if every
 /// attempt fails; without `allow_shift`, a finite x beyond `max_step` is kept (true).
-bool solve_perturbed(LinearSolver& solver, const SparseMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
+bool solve_perturbed(LinearSolver& solver, const TangentMatrix& M, const Eigen::VectorXd& b, bool allow_shift,
                      double max_step, Eigen::VectorXd& x, std::string& note, double& factor_seconds,
                      double& solve_seconds);
 

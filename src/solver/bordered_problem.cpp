@@ -69,10 +69,11 @@ bool BorderedProblem::side_conditions_hold(double tolerance) const {
   return std::abs(c_) <= tolerance * std::abs(target_);
 }
 
-const SparseMatrix& BorderedProblem::jacobian(int iteration) { return bordered(inner_.jacobian(iteration)); }
+const TangentMatrix& BorderedProblem::jacobian(int iteration) { return bordered(inner_.jacobian(iteration)); }
 
-const SparseMatrix& BorderedProblem::bordered(const SparseMatrix& K) {
-  fill_bordered(K, g_, dV_, A_);
+const TangentMatrix& BorderedProblem::bordered(const TangentMatrix& K) {
+  K.expand(K_);
+  fill_bordered(K_, g_, dV_, A_.general());
   return A_;
 }
 

@@ -21,10 +21,11 @@ public:
   double work(const Eigen::VectorXd& dx, const Eigen::VectorXd& r) const override;
   /// |V − target| ≤ tolerance |target|.
   bool side_conditions_hold(double tolerance) const override;
-  const SparseMatrix& jacobian(int iteration) override;
-  /// The bordered matrix of the last evaluation with K in place of the equilibrium tangent (K of
-  /// the pattern of System::pattern; the stress-free start's K + K₀, solver/volume_start.hpp).
-  const SparseMatrix& bordered(const SparseMatrix& K);
+  const TangentMatrix& jacobian(int iteration) override;
+  /// The bordered matrix of the last evaluation with K in place of the equilibrium tangent (a
+  /// tangent of System::layout with both triangles; the stress-free start's K + K₀,
+  /// solver/volume_start.hpp). A general matrix: K is expanded into it.
+  const TangentMatrix& bordered(const TangentMatrix& K);
   void step(const Eigen::VectorXd& dx, double factor) override;
   void describe(IterationRecord& rec) override { inner_.describe(rec); }
   double max_correction() const override { return inner_.max_correction(); }
@@ -45,7 +46,8 @@ private:
   LoadState& loads_;
   int load_;
   double target_;
-  SparseMatrix A_;            // the bordered matrix (pattern of K plus a full last row and column)
+  TangentMatrix A_;           // the bordered matrix (pattern of K plus a full last row and column), general
+  SparseMatrix K_;            // K expanded (both triangles), read column by column into A_
   Eigen::VectorXd g_, dV_;    // free parts of ∂f_ext/∂p and ∂V/∂u at the last evaluation
   double c_ = 0;              // V − target at the last evaluation
 };

@@ -13,7 +13,11 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
                              const SolverSettings& settings,
                              const std::function<void(const IterationRecord&)>& on_iteration,
                              const VolumeConstraint* constraint, const Eigen::VectorXd* converged) {
-  MechanicalProblem equilibrium(system, loads, u);
+  // The tangent's upper triangle is assembled only for a consumer that reads it: the solver (all
+  // but CHOLMOD: `auto`'s symmetry test, the LU solvers), the symmetrization and the bordered
+  // system. For CHOLMOD alone the lower triangle is the whole matrix it factorizes.
+  const bool upper = solver.reads_upper() || settings.symmetrize_pressure_stiffness || constraint;
+  MechanicalProblem equilibrium(system, loads, u, upper);
   // The increment starts at the stress-free reference state.
   const bool stress_free = converged && converged->size() > 0 && (converged->array() == 0.0).all();
   if (constraint) {
@@ -28,7 +32,7 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
     stiffness = hook.get();
     equilibrium.add_hook(std::move(hook));
   }
-  if (settings.symmetrize_pressure_stiffness) equilibrium.add_hook(std::make_unique<Symmetrization>(system.pattern()));
+  if (settings.symmetrize_pressure_stiffness) equilibrium.add_hook(std::make_unique<Symmetrization>());
   std::optional<TangentPredictor> predictor;
   if (converged && settings.tangent_predictor) predictor.emplace(equilibrium, *converged, stiffness);
   return newton(equilibrium, solver, settings, on_iteration, predictor ? &*predictor : nullptr);

@@ -17,8 +17,8 @@ double step_bound(const Model& m) {
 }
 }  // namespace
 
-MechanicalProblem::MechanicalProblem(const System& system, const LoadState& loads, Eigen::VectorXd& u)
-    : system_(system), loads_(loads), u_(u), K_(system.pattern()), max_correction_(step_bound(system.model())) {}
+MechanicalProblem::MechanicalProblem(const System& system, const LoadState& loads, Eigen::VectorXd& u, bool upper)
+    : system_(system), loads_(loads), u_(u), K_(system.tangent(upper)), max_correction_(step_bound(system.model())) {}
 
 Eigen::VectorXd MechanicalProblem::free_part(const Eigen::VectorXd& full) const {
   Eigen::VectorXd f(system_.num_free());
@@ -34,7 +34,7 @@ double MechanicalProblem::evaluate(Eigen::VectorXd& r) {
   return scale;
 }
 
-const SparseMatrix& MechanicalProblem::jacobian(int iteration) {
+const TangentMatrix& MechanicalProblem::jacobian(int iteration) {
   for (auto& hook : hooks_) hook->apply(iteration, K_);
   return K_;
 }

@@ -14,15 +14,16 @@ namespace tunica {
 
 class MechanicalProblem : public NonlinearProblem {
 public:
-  /// u (all DOFs) is the state, moved in place; `loads` is read at every evaluation.
-  MechanicalProblem(const System& system, const LoadState& loads, Eigen::VectorXd& u);
+  /// u (all DOFs) is the state, moved in place; `loads` is read at every evaluation. `upper`:
+  /// whether the tangent's upper triangle is assembled, for a consumer that reads it (System).
+  MechanicalProblem(const System& system, const LoadState& loads, Eigen::VectorXd& u, bool upper = true);
 
   /// Appends a tangent modification; hooks are applied in the order added.
   void add_hook(std::unique_ptr<TangentHook> hook) { hooks_.push_back(std::move(hook)); }
 
   int size() const override { return system_.num_free(); }
   double evaluate(Eigen::VectorXd& r) override;
-  const SparseMatrix& jacobian(int iteration) override;
+  const TangentMatrix& jacobian(int iteration) override;
   void step(const Eigen::VectorXd& dx, double factor) override;
   void describe(IterationRecord& rec) override;
   double max_correction() const override { return max_correction_; }
@@ -36,13 +37,13 @@ public:
   /// correction that evaluated elsewhere, the tangent predictor at u_n, hands it over).
   void set_active_set(std::vector<char> set) { previous_set_ = std::move(set); }
   /// The Jacobian as evaluated, without the hooks (the tangent predictor assembles into it).
-  SparseMatrix& raw_jacobian() { return K_; }
+  TangentMatrix& raw_jacobian() { return K_; }
 
 private:
   const System& system_;
   const LoadState& loads_;
   Eigen::VectorXd& u_;
-  SparseMatrix K_;
+  TangentMatrix K_;
   Eigen::VectorXd R_;  // all DOFs
   std::vector<std::unique_ptr<TangentHook>> hooks_;
   double max_correction_ = 0;

@@ -121,7 +121,7 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
         return result;
       }
     }
-    const SparseMatrix& J = problem.jacobian(k);
+    const TangentMatrix& J = problem.jacobian(k);
     std::string note;
     const bool solved = solve_perturbed(solver, J, Eigen::VectorXd(-r), problem.allows_perturbation(),
                                         problem.max_correction(), dx, note, rec.factor_seconds, rec.solve_seconds);

@@ -7,7 +7,7 @@
 // solver/tangent_hooks.hpp, solver/tangent_predictor.hpp), never in solver/newton.cpp.
 #include <Eigen/Core>
 
-#include "linalg/sparse_matrix.hpp"
+#include "linalg/tangent_matrix.hpp"
 
 namespace tunica {
 
@@ -37,7 +37,7 @@ public:
 
   /// The matrix the correction of iteration `iteration` is solved with: the Jacobian of the last
   /// evaluate() with the problem's tangent modifications (solver/tangent_hooks.hpp) applied.
-  virtual const SparseMatrix& jacobian(int iteration) = 0;
+  virtual const TangentMatrix& jacobian(int iteration) = 0;
 
   /// Moves the state by factor · dx (dx of size()).
   virtual void step(const Eigen::VectorXd& dx, double factor) = 0;

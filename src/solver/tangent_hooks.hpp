@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 
 #include "assembly/system.hpp"
-#include "linalg/matrix_symmetry.hpp"
+#include "linalg/tangent_matrix.hpp"
 
 namespace tunica {
 
@@ -15,7 +15,7 @@ class TangentHook {
 public:
   virtual ~TangentHook() = default;
   /// Modifies K, the Jacobian of iteration `iteration` (0: the first correction of the increment).
-  virtual void apply(int iteration, SparseMatrix& K) = 0;
+  virtual void apply(int iteration, TangentMatrix& K) = 0;
 };
 
 /// The stiffened first correction from a stress-free state, theory manual §7.2, (7.6)–(7.8):
@@ -25,11 +25,11 @@ public:
 class StartStiffness : public TangentHook {
 public:
   StartStiffness(const System& system, const LoadState& loads) : system_(system), loads_(loads) {}
-  void apply(int iteration, SparseMatrix& K) override {
+  void apply(int iteration, TangentMatrix& K) override {
     if (iteration == 0) add(Eigen::VectorXd(), K);
   }
   /// K += K₀; returns K₀ d over all DOFs (d over all DOFs, or empty for none).
-  Eigen::VectorXd add(const Eigen::VectorXd& d, SparseMatrix& K) const {
+  Eigen::VectorXd add(const Eigen::VectorXd& d, TangentMatrix& K) const {
     return system_.add_start_stiffness(loads_, d, K);
   }
 
@@ -39,14 +39,11 @@ private:
 };
 
 /// K ← (K + Kᵀ)/2 at every iteration: the follower-pressure load stiffness symmetrized so that
-/// a Cholesky factorization applies (a modified Newton method, linear convergence; §7).
+/// a Cholesky factorization applies (a modified Newton method, linear convergence; §7). K is a
+/// split tangent with both triangles (solver/increment.cpp asks for them): slot by slot.
 class Symmetrization : public TangentHook {
 public:
-  explicit Symmetrization(const SparseMatrix& pattern) : transpose_(pattern) {}
-  void apply(int, SparseMatrix& K) override { transpose_.symmetrize(K); }
-
-private:
-  TransposeMap transpose_;
+  void apply(int, TangentMatrix& K) override { K.symmetrize(); }
 };
 
 }  // namespace tunica

@@ -14,7 +14,7 @@ std::optional<FirstCorrection> TangentPredictor::take(
   const System& system = problem_.system();
   const LoadState& loads = problem_.loads();
   Eigen::VectorXd& u = problem_.state();
-  SparseMatrix& K = problem_.raw_jacobian();
+  TangentMatrix& K = problem_.raw_jacobian();
   const Eigen::VectorXd dp = u - un_;  // the prescribed increment (zero on free DOFs)
   if (dp.size() == 0 || dp.cwiseAbs().maxCoeff() == 0) return std::nullopt;
   constexpr double h = 1e-6;

@@ -30,14 +30,14 @@ std::optional<FirstCorrection> VolumeStartStiffness::take(
   const int nf = inner.size();
   const Eigen::VectorXd dp = inner.state() - un_;  // the prescribed increment (zero on free DOFs)
   const bool moved = dp.size() > 0 && dp.cwiseAbs().maxCoeff() > 0;
-  const SparseMatrix K = inner.raw_jacobian();  // the exact tangent at the start, without K₀
+  const TangentMatrix K = inner.raw_jacobian();  // the exact tangent at the start, without K₀
   const double pn = problem_.pressure();
   rec.assembly_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   FirstCorrection first;
   double estimate = pn;  // p̂: the pressure whose Laplace tension K₀ is built from
   for (int solve = 0; solve < kMaxSolves; ++solve) {
-    SparseMatrix Ks = K;
+    TangentMatrix Ks = K;
     Eigen::VectorXd rhs = -r;
     if (estimate != 0) {
       LoadState at = inner.loads();
@@ -57,10 +57,10 @@ std::optional<FirstCorrection> VolumeStartStiffness::take(
       // No K₀ at that pressure (no pressurized 3-D membrane): the plain correction is Newton's own.
       LoadState at = inner.loads();
       at.pressure[problem_.load()] = pressure;
-      SparseMatrix probe = K;
-      probe.coeffs().setZero();
+      TangentMatrix probe = K;
+      probe.set_zero();
       system.add_start_stiffness(at, Eigen::VectorXd(), probe);
-      if (probe.coeffs().cwiseAbs().maxCoeff() == 0) return std::nullopt;
+      if (probe.max_abs() == 0) return std::nullopt;
     }
     estimate = pressure;
   }

@@ -198,7 +198,7 @@ steps: [{increments: 1, set: {p: 100 mmHg}}]
   sys.apply_boundary(loads, u0);
   Eigen::VectorXd R;
   SparseMatrix K;
-  sys.assemble(u0, loads, R, &K);
+  sys.assemble_full(u0, loads, R, K);
   std::vector<int> free;
   for (int i = 0; i < m.num_dofs(); ++i)
     if (sys.equation(i) >= 0) free.push_back(i);

@@ -64,7 +64,7 @@ TEST(SolidSystem, AssembledTangentMatchesFiniteDifferences) {
     sys.apply_boundary(loads, u);
     Eigen::VectorXd R;
     SparseMatrix K;
-    sys.assemble(u, loads, R, &K);
+    sys.assemble_full(u, loads, R, K);
     const Eigen::MatrixXd Kd(K);
     const double worst = fd_tangent_error(sys, loads, u, Kd, 1e-7);
     const double size = Kd.cwiseAbs().maxCoeff();
@@ -82,7 +82,7 @@ TEST(SolidSystem, WithoutPressureTheTangentIsSymmetricAndTheResidualIsTheEnergyG
   sys.apply_boundary(loads, u);
   Eigen::VectorXd R;
   SparseMatrix K;
-  sys.assemble(u, loads, R, &K);
+  sys.assemble_full(u, loads, R, K);
   const Eigen::MatrixXd Kd(K);
   const double asym = (Kd - Kd.transpose()).cwiseAbs().maxCoeff(), size = Kd.cwiseAbs().maxCoeff();
   EXPECT_LT(asym, 1e-13 * size);
@@ -116,9 +116,9 @@ TEST(SolidSystem, ParallelAssemblyIsBitForBitTheSerialOne) {
   SparseMatrix K1, K2;
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
-  sys.assemble(u, loads, R1, &K1);
+  sys.assemble_full(u, loads, R1, K1);
   omp_set_num_threads(2);
-  sys.assemble(u, loads, R2, &K2);
+  sys.assemble_full(u, loads, R2, K2);
   omp_set_num_threads(threads);
   EXPECT_EQ((R1 - R2).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_EQ(Eigen::MatrixXd(K1 - K2).cwiseAbs().maxCoeff(), 0.0);

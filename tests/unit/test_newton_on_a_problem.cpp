@@ -34,7 +34,10 @@ public:
     return b_.norm();
   }
   bool side_conditions_hold(double) const override { return side; }
-  const SparseMatrix& jacobian(int) override { return J_; }
+  const TangentMatrix& jacobian(int) override {
+    M_ = J_;
+    return M_;
+  }
   void step(const Eigen::VectorXd& dx, double factor) override { x_ += factor * dx; }
   double max_correction() const override { return 1e6; }
   void describe(IterationRecord& rec) override { rec.active_contacts = 7; }  // the problem's own column
@@ -48,6 +51,7 @@ private:
   std::function<double(double)> f_, df_;
   Eigen::VectorXd x_, b_;
   SparseMatrix J_;
+  TangentMatrix M_;
 };
 
 std::vector<IterationRecord> run(NonlinearProblem& p, const SolverSettings& s, NewtonResult& result,
