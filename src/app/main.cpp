@@ -274,7 +274,9 @@ int main(int argc, char** argv) {
   }
   try {
     const int compute_threads = threads > 0 ? threads : tunica::default_compute_threads();
-    if (*run_cmd) tunica::start_with_thread_environment(compute_threads, argv);
+    // The commands that compute (assembly, factorizations, fits) start again with the thread limits
+    // in the environment (linalg/compute_threads.hpp).
+    if (*run_cmd || *check_cmd || *fit_cmd) tunica::start_with_thread_environment(compute_threads, argv);
     tunica::set_compute_threads(compute_threads);
     if (*run_cmd) {
       return run(deck, out, restart, quiet, read_options);
