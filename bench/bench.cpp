@@ -76,6 +76,7 @@ struct Options {
   bool symmetrized = false;
   double residual_tolerance = 1e-9;  // the deck defaults
   double energy_tolerance = 1e-12;
+  std::string reuse;  // reuse_factorization; empty: the deck default
   int threads = 0;
   bool paired = false;
   std::string csv;
@@ -83,8 +84,9 @@ struct Options {
 
 std::string solver_block(const Options& o) {
   return fmt::format(
-      "solver: {{linear_solver: {}, pressure_stiffness: {}, residual_tolerance: {:.3g}, energy_tolerance: {:.3g}}}\n",
-      o.solver, o.symmetrized ? "symmetrized" : "exact", o.residual_tolerance, o.energy_tolerance);
+      "solver: {{linear_solver: {}, pressure_stiffness: {}, residual_tolerance: {:.3g}, energy_tolerance: {:.3g}{}}}\n",
+      o.solver, o.symmetrized ? "symmetrized" : "exact", o.residual_tolerance, o.energy_tolerance,
+      o.reuse.empty() ? "" : ", reuse_factorization: " + o.reuse);
 }
 
 /// Tube deck: around = along so that the split quads are near-square (length 2πR).
@@ -209,7 +211,7 @@ int run(const Options& o) {
 
   // Per-iteration times: iterations followed by a solve.
   double assembly = 0, factor = 0, solve = 0;
-  int solves = 0;
+  int solves = 0, factorizations = 0;
   std::string used;
   std::vector<double> times;  // per iteration: assembly + factorization + solve
   for (const auto& r : rec.records)
@@ -219,7 +221,10 @@ int run(const Options& o) {
       factor += r.factor_seconds;
       solve += r.solve_seconds;
       ++solves;
-      used = r.solver;
+      if (r.solver.find(tunica::kReusedFactorization) == std::string::npos) {
+        ++factorizations;
+        used = r.solver;
+      }
     }
   // The floor: one bare numeric factorization of the last tangent with the solver the run used.
   const tunica::System& system = analysis.system();
@@ -311,8 +316,8 @@ int run(const Options& o) {
               size.c_str(), elements, model.num_nodes(), system.num_free(), nonzeros,
               tunica::compute_threads(), used.c_str(), o.symmetrized ? " (symmetrized)" : "");
   std::printf("  tangent asymmetry max|K - K^T| / max|K| = %.2e\n", asym / kmax);
-  std::printf("  increments %zu  Newton iterations %d  max per increment %d  cut-backs %d\n",
-              rec.iterations_per_increment.size(), solves, max_its, rec.cutbacks);
+  std::printf("  increments %zu  Newton iterations %d  factorizations %d  max per increment %d  cut-backs %d\n",
+              rec.iterations_per_increment.size(), solves, factorizations, max_its, rec.cutbacks);
   std::printf("  per iteration %.4f s = assembly %.4f + factorization %.4f + solve %.4f  (assembly %.1f %%)\n",
               per_iteration, assembly / solves, factor / solves, solve / solves, 100.0 * assembly / solves / per_iteration);
   std::printf("  bare factorization %.4f s (first, with the solver's own setup: %.4f s)  iteration / factorization %.2f"
@@ -334,7 +339,7 @@ int run(const Options& o) {
         by[r.solver].first += 1;
         by[r.solver].second += r.factor_seconds;
       }
-    std::printf("  factorizations by solver:");
+    std::printf("  corrections by solver (+reused: an earlier factorization, none new):");
     for (const auto& [name, v] : by) std::printf("  %s %d (mean %.4f s)", name.c_str(), v.first, v.second / v.first);
     std::printf("\n");
   }
@@ -347,14 +352,15 @@ int run(const Options& o) {
       csv << "problem,size,elements,nodes,unknowns,nonzeros,threads,solver,symmetrized,residual_tolerance,"
              "energy_tolerance,increments,iterations,"
              "max_iterations_per_increment,cutbacks,iteration_s,assembly_s,factor_s,solve_s,bare_factor_s,"
-             "first_factor_s,setup_s,run_s,peak_rss_MB,closed_form_error,median_iteration_s,floor_s,iterations_over_floor,paired_bare_factor_s\n";
-    csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{},{:.5g},{:.5g},{:.4f},{:.5g}\n",
+             "first_factor_s,setup_s,run_s,peak_rss_MB,closed_form_error,median_iteration_s,floor_s,iterations_over_floor,paired_bare_factor_s,factorizations,reuse_factorization\n";
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{:.3g},{:.3g},{},{},{},{},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.5g},{:.4g},{:.4g},{:.0f},{},{:.5g},{:.5g},{:.4f},{:.5g},{},{}\n",
                        o.problem, size, elements, model.num_nodes(), system.num_free(), nonzeros,
                        tunica::compute_threads(), used, o.symmetrized ? 1 : 0, o.residual_tolerance, o.energy_tolerance,
                        rec.iterations_per_increment.size(), solves,
                        max_its, rec.cutbacks, per_iteration, assembly / solves, factor / solves, solve / solves, t_bare,
                        t_first, t_setup, t_run, peak_rss_mb(), accuracy, median, floor,
-                       (assembly + factor + solve) / floor, paired_n ? paired_sum / paired_n : 0.0);
+                       (assembly + factor + solve) / floor, paired_n ? paired_sum / paired_n : 0.0, factorizations,
+                       o.reuse.empty() ? "last" : o.reuse);
   }
   return 0;
 }
@@ -384,6 +390,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--energy-tolerance", o.energy_tolerance, "Newton: |Δu·R| relative to the first (deck default 1e-12)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--reuse-factorization", o.reuse, "Newton: when to reuse an earlier factorization (deck default last)")
+      ->check(CLI::IsMember({"last", "basin", "never"}));
   app.add_flag("--paired", o.paired, "time a bare factorization of the same matrix next to each of the run's");
   app.add_option("--threads", o.threads,
                  "threads to compute on (default: OMP_NUM_THREADS, else the CPUs this process may run on): the element "

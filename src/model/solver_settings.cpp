@@ -20,6 +20,13 @@ std::string deck_number(double v) {
   return s;
 }
 std::string deck_bool(bool b) { return b ? "true" : "false"; }
+std::string reuse_name(SolverSettings::FactorizationReuse r) {
+  switch (r) {
+    case SolverSettings::FactorizationReuse::never: return "never";
+    case SolverSettings::FactorizationReuse::basin: return "basin";
+    default: return "last";
+  }
+}
 
 }  // namespace
 
@@ -53,6 +60,17 @@ const ComponentSpec& solver_settings_spec() {
                                               "residual is then round-off, whatever ‖R₀‖ was)")),
                               1e-6),
                       deck_number(d.roundoff_tolerance)),
+         with_default(one_of(text("reuse_factorization",
+                                  "when a Newton correction is solved with the factorization of an earlier iteration "
+                                  "of the increment instead of a new one (a modified Newton step): last = when that "
+                                  "correction is predicted to converge (twice the last ratio ‖R_k‖/‖R_k−1‖ times "
+                                  "‖R_k‖ within `residual_tolerance`), which saves a factorization without adding an "
+                                  "iteration; basin = whenever ‖R‖ ≤ 1e-4 ‖R₀‖ and the last correction cut ‖R‖ "
+                                  "tenfold, fewer factorizations for an iteration or two more (large models, where "
+                                  "the factorization is the iteration); never = a new factorization every iteration "
+                                  "(the plain Newton method, quadratic to the end)"),
+                             {"last", "basin", "never"}),
+                      reuse_name(d.reuse_factorization)),
          with_default(at_least(number("divergence_ratio", Dimension::dimensionless,
                                       "an attempt stops as diverging when ‖R‖ exceeds this multiple of ‖R₀‖ (and is cut back)"),
                                1.0),
@@ -97,6 +115,12 @@ void set_solver_setting(SolverSettings& s, const std::string& key, const Params&
   else if (key == "residual_tolerance") s.residual_tolerance = p.number(key);
   else if (key == "energy_tolerance") s.energy_tolerance = p.number(key);
   else if (key == "roundoff_tolerance") s.roundoff_tolerance = p.number(key);
+  else if (key == "reuse_factorization") {
+    const std::string v = p.text(key);
+    s.reuse_factorization = v == "never"   ? SolverSettings::FactorizationReuse::never
+                            : v == "basin" ? SolverSettings::FactorizationReuse::basin
+                                           : SolverSettings::FactorizationReuse::last;
+  }
   else if (key == "divergence_ratio") s.divergence_ratio = p.number(key);
   else if (key == "max_cutbacks") s.max_cutbacks = static_cast<int>(p.integer(key));
   else if (key == "line_search") s.line_search = p.boolean(key);

@@ -23,6 +23,11 @@ struct SolverSettings {
   /// ‖R‖ at or below this fraction of the force scale (the forces that cancel in R) is round-off:
   /// converged whatever the relative tests say.
   double roundoff_tolerance = 1e-14;
+  /// When a correction is solved with the factorization of an earlier iteration of the attempt,
+  /// (7.11): never; `last`, when that correction is predicted to converge (2ρ_k ‖R_k‖ ≤ tol_r ‖R₀‖, ρ_k
+  /// the last ratio); `basin`, whenever ‖R_k‖ ≤ 10⁻⁴ ‖R₀‖ and ρ_k ≤ 0.1.
+  enum class FactorizationReuse { never, last, basin };
+  FactorizationReuse reuse_factorization = FactorizationReuse::last;
   double divergence_ratio = 1e8;     ///< ‖R‖ above this multiple of ‖R₀‖ stops the attempt as diverging
   int max_cutbacks = 5;
   bool line_search = true;           ///< halve a correction that raises ‖R‖, (7.4)

@@ -27,6 +27,7 @@ public:
   void step(const Eigen::VectorXd& dx, double factor) override;
   void describe(IterationRecord& rec) override;
   double max_correction() const override { return max_correction_; }
+  bool allows_factorization_reuse() const override { return true; }
 
   const System& system() const { return system_; }
   const LoadState& loads() const { return loads_; }

@@ -10,6 +10,23 @@
 
 namespace tunica {
 
+namespace {
+
+/// Whether iteration k's correction is solved with the last factorization, (7.11): r = ‖R_k‖/‖R₀‖,
+/// rho = ‖R_k‖/‖R_k−1‖. In the quadratic basin a Newton correction leaves about ρ² ‖R_k‖, one solved with
+/// the factorization at u_k−1 about 2ρ ‖R_k‖ (7.12).
+bool reuse_pays(const SolverSettings& settings, double r, double rho) {
+  using Reuse = SolverSettings::FactorizationReuse;
+  if (rho > 0.1 || r > 1e-4) return false;
+  switch (settings.reuse_factorization) {
+    case Reuse::last: return 2 * rho * r <= settings.residual_tolerance;
+    case Reuse::basin: return true;
+    default: return false;
+  }
+}
+
+}  // namespace
+
 NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const SolverSettings& settings,
                     const std::function<void(const IterationRecord&)>& on_iteration, FirstCorrectionStrategy* first) {
   NewtonResult result;
@@ -18,6 +35,7 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
   double slope0 = 0;  // Δx·r(x) of the correction Δx being tried (line search; halved with it)
   int k0 = 0;
   std::vector<double> residuals;  // ‖R‖ of every iteration of this attempt
+  bool factored = false;           // the solver holds a factorization of this attempt's Jacobian
   if (first) {
     if (auto f = first->take(solver, on_iteration)) {
       dx = std::move(f->dx);
@@ -121,12 +139,32 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
         return result;
       }
     }
+    // A reused factorization, (7.11): the correction is solved with the factorization of an
+    // earlier iteration of this attempt. One that is not finite or beyond the credible size is
+    // solved afresh; one that converges poorly makes the next iteration factorize (its ratio fails
+    // the test).
+    if (factored && problem.allows_factorization_reuse() && rec.active_changes == 0 && n >= 2 &&
+        reuse_pays(settings, rec.relative_residual, residuals[n - 1] / residuals[n - 2])) {
+      const auto t = std::chrono::steady_clock::now();
+      dx = solver.solve(-r);
+      rec.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+      if (dx.allFinite() && dx.cwiseAbs().maxCoeff() <= problem.max_correction()) {
+        rec.solver = solver.used() + std::string(kReusedFactorization);
+        on_iteration(rec);
+        slope0 = problem.work(dx, r);
+        problem.step(dx, 1.0);
+        continue;
+      }
+    }
     const TangentMatrix& J = problem.jacobian(k);
     std::string note;
+    const double reuse_solve_seconds = rec.solve_seconds;
     const bool solved = solve_perturbed(solver, J, Eigen::VectorXd(-r), problem.allows_perturbation(),
                                         problem.max_correction(), dx, note, rec.factor_seconds, rec.solve_seconds);
+    rec.solve_seconds += reuse_solve_seconds;
     rec.solver = solver.used() + note;
     if (!note.empty()) ++result.perturbed;
+    factored = solved && note.empty();
     if (!solved) {
       on_iteration(rec);
       const std::string refusal = solver.refusal();

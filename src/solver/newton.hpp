@@ -27,11 +27,15 @@ struct IterationRecord {
   int active_changes = 0;         ///< slave nodes whose contact status (active or not) differs from the
                                   ///< previous iteration's of this attempt (0 at the first residual)
   std::string solver;             ///< the linear solver that factorized K (empty: no solve); "+shift": K was
-                                  ///< singular and its diagonal was perturbed (linalg/perturbed_solve.hpp)
+                                  ///< singular and its diagonal was perturbed (linalg/perturbed_solve.hpp);
+                                  ///< "+reused": solved with an earlier iteration's factorization, (7.11)
   double assembly_seconds = 0;
   double factor_seconds = 0;      ///< numeric factorization (+ symbolic analysis on the first of a step)
   double solve_seconds = 0;       ///< forward/back substitution
 };
+
+/// The suffix of IterationRecord::solver for a correction solved with an earlier factorization.
+inline constexpr const char* kReusedFactorization = "+reused";
 
 struct NewtonResult {
   bool converged = false;

@@ -54,6 +54,9 @@ public:
   virtual bool allows_backtracking() const { return true; }
   /// False when a singular Jacobian must not be solved with a perturbed diagonal.
   virtual bool allows_perturbation() const { return true; }
+  /// False when a correction must not be solved with the factorization of an earlier iteration's
+  /// Jacobian (modified Newton, (7.5)): where the matrix factorized is not the Jacobian alone.
+  virtual bool allows_factorization_reuse() const { return false; }
   /// True when R₀ says nothing of the scale of the problem (the volume constraint's start, where
   /// only the target moved): the first corrected residual is the yardstick of the tolerances too.
   virtual bool yardstick_after_first_correction() const { return false; }

@@ -125,8 +125,8 @@ TEST_F(RestartFingerprint, AConvergedStepsTargetAndTheMeshAreRefused) {
 TEST_F(RestartFingerprint, SolverSettingsAndStepsNotReachedMayChange) {
   // The failing step's increments and solver are changed back: the run continues to the end,
   // and its history is the uninterrupted run's.
-  const Outcome o = restart("fixed.yaml", replace(original_, "solver: {residual_tolerance: 1e-10}",
-                                                  "solver: {residual_tolerance: 1e-10, max_iterations: 14}"));
+  const Outcome o = restart("fixed.yaml", replace(original_, "solver: {residual_tolerance: 1e-10,",
+                                                  "solver: {residual_tolerance: 1e-10, max_iterations: 14,"));
   ASSERT_EQ(o.code, 0) << o.output;
   ASSERT_EQ(tunica_cli("run " + kExample + " -q -o " + (dir_ / "full").string(), dir_ / "full.log").code, 0);
   EXPECT_EQ(read_text(out() + "/history.csv"), read_text((dir_ / "full" / "history.csv").string()));
