@@ -80,7 +80,7 @@ const ComponentSpec& boundary_spec() {
       "linearly within the step to the value the step's `set` gives, and held after.",
       {required(text("node_set", "name of a node set")),
        required(structured("dofs", "list",
-                           "DOFs among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`; nodes of "
+                           "at least one DOF among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`; nodes of "
                            "`axisymmetric_shell` parts also `slope_r`, `slope_z`: the change of the meridian slope "
                            "∂r/∂S, ∂z/∂S (dimensionless; a boundary that mixes slopes and positions can only be 0)"))}};
   return s;
@@ -356,14 +356,17 @@ void read_boundaries(const DeckNode& deck, Model& m) {
     const std::vector<DeckNode> list = dofs.is_sequence() ? dofs.items() : std::vector<DeckNode>{dofs};
     std::vector<std::string> dof_names = m.dof_names();
     if (m.geometry == Geometry::axisymmetric) dof_names.insert(dof_names.end(), {"slope_r", "slope_z"});
+    const std::string allowed = m.geometry == Geometry::axisymmetric
+                                    ? "axisymmetric DOFs are r and z, and slope_r and slope_z on shells"
+                                    : "3-D DOFs are x, y and z";
+    // An empty list would hold nothing, and a step's `set` of the boundary would do nothing.
+    if (list.empty())
+      dofs.fail("the list of DOFs is empty, so the boundary would hold nothing: name the DOFs it holds (" + allowed +
+                "), e.g. `dofs: [z]`");
     for (const auto& d : list) {
       const std::string s = d.as_string();
       auto it = std::find(dof_names.begin(), dof_names.end(), s);
-      if (it == dof_names.end())
-        d.fail("unknown DOF '" + s + "' (" +
-               (m.geometry == Geometry::axisymmetric ? "axisymmetric DOFs are r and z, and slope_r and slope_z on shells"
-                                                     : "3-D DOFs are x, y and z") +
-               ")");
+      if (it == dof_names.end()) d.fail("unknown DOF '" + s + "' (" + allowed + ")");
       const int c = static_cast<int>(it - dof_names.begin());
       if (c >= m.dofs_per_node())
         for (int n : m.node_sets[b.node_set].nodes)

@@ -146,6 +146,14 @@ TEST(BadInput, UndefinedNodeSet) {
                "undefined node set 'wall.begin' (the node sets are: wall.start, wall.end, wall.all)");
 }
 
+TEST(BadInput, AnEmptyDofListIsAnErrorAtItsLine) {
+  // `dofs: []` would hold nothing, and a step setting the boundary would do nothing.
+  expect_error("empty-dofs", "stretch: {node_set: wall.end, dofs: [z]}", "stretch: {node_set: wall.end, dofs: []}",
+               "boundary.stretch.dofs",
+               "the list of DOFs is empty, so the boundary would hold nothing: name the DOFs it holds (axisymmetric "
+               "DOFs are r and z, and slope_r and slope_z on shells), e.g. `dofs: [z]`");
+}
+
 TEST(BadInput, UndefinedLoadInHistory) {
   expect_error("undefined-load", "load: lumen", "load: lumen2", "output.history[0].load", "undefined load 'lumen2'");
 }
