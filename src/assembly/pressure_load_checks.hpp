@@ -33,7 +33,7 @@ std::vector<std::string> pressure_load_warnings(const System& system);
 /// measures it (about the point p₀), each cap taken as the plane region its edges bound, from the
 /// point of its plane nearest p₀ (exact for planar caps). Open edges that lie with their
 /// neighbours in one plane through p₀ (symmetry planes, an end at p₀) need no cap and are
-/// left out. `open_edges` receives the number of open edges counted.
-double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges = nullptr);
+/// left out. `open_count` receives the number of open edges counted.
+double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_count = nullptr);
 
 }  // namespace tunica

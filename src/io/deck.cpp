@@ -26,6 +26,7 @@
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/rigid_motion_check.hpp"
+#include "model/volume_axis_check.hpp"
 #include "quantities/history_quantity.hpp"
 
 namespace tunica {
@@ -102,7 +103,9 @@ const ComponentSpec& load_spec() {
        with_default(boolean("flip", "act along −n instead"), "false"),
        with_default(numbers("volume_point", Dimension::length, 3, "3-D: the point p₀ of the volume measure"),
                     "[0, 0, 0]"),
-       numbers("volume_axis", Dimension::dimensionless, 3, "3-D: measure the volume about this axis through p₀")}};
+       numbers("volume_axis", Dimension::dimensionless, 3,
+               "3-D: measure the volume about this axis through p₀; each open end of the surface must lie in a "
+               "plane normal to it, or one whose middle it passes through, or one that holds it")}};
   return s;
 }
 
@@ -415,6 +418,7 @@ void read_loads(const DeckNode& deck, Model& m) {
     if (m.geometry == Geometry::axisymmetric && (node.has("volume_point") || node.has("volume_axis")))
       p.fail(node.has("volume_point") ? "volume_point" : "volume_axis",
              "an axisymmetric volume is always measured about the z axis");
+    if (const std::string why = volume_axis_misfit(m, part, load.volume); !why.empty()) p.fail("volume_axis", why);
     m.loads.push_back(std::move(load));
   }
 }
