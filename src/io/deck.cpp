@@ -346,7 +346,14 @@ void read_node_sets(const DeckNode& deck, Model& m) {
 
 int node_set_ref(const Params& p, const std::string& key, const Model& m) {
   const int s = m.find_node_set(p.text(key));
-  if (s < 0) p.fail(key, "undefined node set '" + p.text(key) + "' " + known_names(p.text(key), names_of(m.node_sets), "node sets"));
+  if (s < 0) {
+    // A set the part's generator makes only for other parameters (a tube's `x0`): say why.
+    const auto absent = m.absent_node_sets.find(p.text(key));
+    p.fail(key, "undefined node set '" + p.text(key) + "'" +
+                    (absent != m.absent_node_sets.end() ? ": its part's mesh has none, since " + absent->second + " "
+                                                        : std::string(" ")) +
+                    known_names(p.text(key), names_of(m.node_sets), "node sets"));
+  }
   return s;
 }
 

@@ -154,6 +154,21 @@ TEST(BadInput, AnEmptyDofListIsAnErrorAtItsLine) {
                "DOFs are r and z, and slope_r and slope_z on shells), e.g. `dofs: [z]`");
 }
 
+TEST(BadInput, ATubeWithoutX0SaysWhyAndProposesNoOtherSet) {
+  // The 3-D quarter tube with its sector written 1.5708 (rad, not exactly π/2): its last column
+  // is its x0 by construction, so the deck is valid. With 85 deg there is no column at 90°:
+  // the error says why, and does not propose `wall.y0` (another set, not a typo).
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  const Outcome ok = run_cli("check " + write_deck("sector-1.5708", replace(quarter, "sector: 90 deg", "sector: 1.5708")));
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  const Outcome o = expect_check_error(
+      kScratch, "sector-85", replace(quarter, "sector: 90 deg", "sector: 85 deg"), "sym_x:", "boundary.sym_x.node_set",
+      "undefined node set 'wall.x0': its part's mesh has none, since `x0` holds the nodes at θ = 90° and 270°, on the "
+      "plane x = 0, and this tube's sector, 85 deg, ends before 90° (a quarter tube is `sector: 90 deg`) (the node "
+      "sets are: ");
+  EXPECT_EQ(o.output.find("did you mean"), std::string::npos) << o.output;
+}
+
 TEST(BadInput, UndefinedLoadInHistory) {
   expect_error("undefined-load", "load: lumen", "load: lumen2", "output.history[0].load", "undefined load 'lumen2'");
 }
