@@ -3,7 +3,8 @@
 // found at the reference state (`tunica check` and `tunica run` print them):
 //  - the load pushes its surface inward: the volume on the side the pressure pushes away from,
 //    theory manual (6.6)–(6.7), is negative, so the surface's normals point into the volume it
-//    encloses (a pressure from outside is meant that way; one inside a vessel is not);
+//    encloses, or `flip: true` turned the pressure against normals that point out of it (a
+//    pressure from outside is meant that way; one inside a vessel is not);
 //  - a 3-D load whose volume is reported (history `volume`) or controlled (`volume_control`),
 //    measured about a point (no `volume_axis`), on a surface with open edges that no
 //    plane through p₀ closes: the caps that would close it are missing from the enclosed volume
