@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include "core/bounded_file.hpp"
+#include "core/printable.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_names.hpp"
@@ -130,7 +131,8 @@ const ComponentSpec& history_spec() {
       "One column of history.csv, written after each converged increment. The column is `name` "
       "(default: the quantity) followed by `_<unit>` for dimensional quantities.",
       {required(text("quantity", "what to record (see the table of quantities)")),
-       text("name", "column name without the unit suffix"), text("part", "part, for element quantities"),
+       text("name", "column name without the unit suffix: any printable text but a comma or a double quote"),
+       text("part", "part, for element quantities"),
        text("node_set", "node set, for node quantities"), text("load", "load, for `pressure`"),
        text("contact", "contact pair, for contact quantities"),
        one_of(text("reduce", "how several points combine (default: sum for reactions, mean otherwise)"),
@@ -524,6 +526,31 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
   }
 }
 
+/// A history column's `name` goes into the header of history.csv as it is: a comma would split
+/// the column, a double quote or a line break corrupt the row for every CSV reader (pandas, the
+/// csv module, ParaView) and every line-based tool. Such a name is refused rather than quoted:
+/// RFC 4180 quotes would read back in pandas, but not in numpy.loadtxt, a spreadsheet's default
+/// import or `cut -d,`, and a column name never needs them.
+void check_column_name(const Params& h, const std::string& key) {
+  const std::string& name = h.text(key);
+  if (name.empty()) h.fail(key, "the column name is empty: leave `name` out for the quantity's own name, or give one");
+  std::string bad, fixed;
+  for (const char c : name) {
+    const bool wrong = c == ',' || c == '"' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+    if (wrong && bad.find(c) == std::string::npos) bad += c;
+    fixed += wrong ? '_' : c;
+  }
+  if (bad.empty()) return;
+  std::string which;
+  for (const char c : bad)
+    which += std::string(which.empty() ? "" : ", ") +
+             (c == ',' ? "a comma" : c == '"' ? "a double quote" : c == '\n' ? "a line break" : "a control character");
+  h.fail(key, fmt::format("'{}' holds {}, which would corrupt the header of history.csv (a comma splits the column; "
+                          "a quote or a line break breaks the row): a column name may hold any printable character "
+                          "but a comma and a double quote, e.g. `{}`",
+                          printable(name), which, printable(fixed)));
+}
+
 void read_output(const DeckNode& deck, Model& m) {
   if (!deck.has("output")) return;
   const DeckNode out = deck["output"];
@@ -643,6 +670,7 @@ void read_output(const DeckNode& deck, Model& m) {
     } else if (h.has("unit")) {
       h.fail("unit", "quantity '" + r.quantity + "' is dimensionless");
     }
+    if (h.has("name")) check_column_name(h, "name");
     r.column = (h.has("name") ? h.text("name") : r.quantity) + suffix;
     if (!columns.insert(r.column).second)
       node.fail("duplicate history column '" + r.column + "'" +

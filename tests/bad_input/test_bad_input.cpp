@@ -219,6 +219,38 @@ TEST(BadInput, RunWithABadDeckWritesNothingAndKeepsEarlierResults) {
   EXPECT_EQ(read_text((out / "history.csv").string()), "earlier results\n");
 }
 
+TEST(BadInput, AHistoryColumnNameThatWouldCorruptTheCsvIsRefused) {
+  // A comma in `name` split the column in history.csv's header (one name, two columns), so every
+  // reader misaligned the rows; a double quote or a line break breaks the row. Refused at the
+  // name with the characters allowed and the name with them replaced.
+  const std::string from = "name: lambda_theta}";
+  expect_error("name-comma", from, "name: \"lambda,theta\"}", "output.history[1].name",
+               "'lambda,theta' holds a comma, which would corrupt the header of history.csv (a comma splits the "
+               "column; a quote or a line break breaks the row): a column name may hold any printable character but "
+               "a comma and a double quote, e.g. `lambda_theta`");
+  expect_error("name-quote", from, "name: 'lambda\"theta'}", "output.history[1].name", "'lambda\"theta' holds a double quote");
+  expect_error("name-newline", from, "name: \"lambda\\ntheta\"}", "output.history[1].name",
+               "'lambda\\ntheta' holds a line break");
+  expect_error("name-empty", from, "name: \"\"}", "output.history[1].name", "the column name is empty");
+  // Any other printable text is a column of its own: spaces, quotes of another kind, UTF-8. The
+  // header and every row of history.csv have as many fields as columns.
+  const std::string deck = write_deck("name-printable", replace(read_text(kExample), from, "name: \"λ_θ (it's; 1/2)\"}"));
+  const fs::path out = fs::temp_directory_path() / "tunica-bad-input" / "name-printable";
+  const Outcome o = run_cli("run " + deck + " -q -o " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  std::ifstream csv(out / "history.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",λ_θ (it's; 1/2),"), std::string::npos) << header;
+  const auto fields = [](const std::string& line) { return std::count(line.begin(), line.end(), ',') + 1; };
+  int rows = 0;
+  while (std::getline(csv, row)) {
+    EXPECT_EQ(fields(row), fields(header)) << row;
+    ++rows;
+  }
+  EXPECT_GT(rows, 1);
+}
+
 TEST(BadInput, DeckThatIsNotAMap) {
   const Outcome o = run_cli("check " + write_deck("not-a-map", "- just\n- a list\n"));
   EXPECT_EQ(o.exit_code, 2);
