@@ -336,6 +336,28 @@ TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
       << o.output;
 }
 
+TEST(BadInput, ABareArcAngleThatBreaksTheMeridianIsNamedWithDegrees) {
+  // `end_angle: 90` is 90 rad: the arc turned 14 times and ended in "node 2 has a negative
+  // radius" at the mesh, naming no key. The error stands at the angle, says how it was read and
+  // proposes degrees; without a bare angle the mesh is blamed as before, without the radians hint.
+  const std::string sphere = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  const std::string arc = "start_angle: 0 deg, end_angle: 90 deg";
+  Outcome o = expect_check_error(kScratch, "arc-90", replace(sphere, arc, "start_angle: 0 deg, end_angle: 90"),
+                                 "end_angle: 90,", "parts.balloon.mesh.end_angle",
+                                 "90 has no unit and is read in radians (90 rad = 5157 deg), which makes the arc span "
+                                 "5156.62 deg, more than a full turn: a plain number is radians; for degrees write `90 deg`");
+  // Within a turn, 3 rad (172°) reaches r < 0; both bare, the first is blamed and the other named.
+  o = expect_check_error(kScratch, "arc-3", replace(sphere, arc, "start_angle: -1, end_angle: 3"), "start_angle: -1",
+                         "parts.balloon.mesh.start_angle",
+                         "-1 has no unit and is read in radians (-1 rad = -57.3 deg), which puts node 65 at a negative "
+                         "radius r = -0.0291995 mm: a plain number is radians; for degrees write `-1 deg` (and `3 deg` "
+                         "for `end_angle`, also without a unit)");
+  expect_check_error(kScratch, "arc-deg", replace(sphere, arc, "start_angle: 0 deg, end_angle: 120 deg"), "mesh: {type: arc",
+                     "parts.balloon.mesh",
+                     "the meridian has node 76 at a negative radius r = -0.0209424 mm: an axisymmetric meridian stays "
+                     "at r ≥ 0 (check `center`, `radius` and the angles, or `from` and `to`)");
+}
+
 TEST(BadInput, NoExampleDeckWarns) {
   // The examples write a unit on every pressure and angle; none of them is warned about.
   for (const auto& entry : fs::directory_iterator(std::string(TUNICA_SOURCE_DIR) + "/examples")) {
