@@ -391,7 +391,12 @@ TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
                           "move rigidly (translation along x, translation along y, rotation about z)"),
             std::string::npos)
       << o.output;
-  EXPECT_NE(o.output.find("x of `<part>.x0` and y of `<part>.y0`"), std::string::npos) << o.output;
+  // What to hold comes from the part's own node sets: its symmetry planes, by their names.
+  EXPECT_NE(o.output.find("hold enough DOFs to stop them, e.g. x of `wall.x0` (on x = 0) and y of `wall.y0` (on y = 0): "
+                          "held so, the body can still inflate freely"),
+            std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("<part>"), std::string::npos) << o.output;
   const std::string full = write_deck(
       "rigid-full", replace(replace(replace(read_text(quarter), "sector: 90 deg, ", ""),
                                     "  sym_x:   {node_set: wall.x0, dofs: [x]}      # symmetry plane x = 0\n", ""),
@@ -401,14 +406,42 @@ TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
   EXPECT_NE(o.output.find("free to move rigidly (translation along y), so"),
             std::string::npos)
       << o.output;
+  EXPECT_NE(o.output.find("e.g. y of `wall.y0` (on y = 0)"), std::string::npos) << o.output;
   const std::string axisym = write_deck(
       "rigid-axisym", replace(replace(read_text(kExample), "  base:    {node_set: wall.start, dofs: [z]}   # axial position held at z = 0\n", ""),
                               "  stretch: {node_set: wall.end, dofs: [z]}     # axial displacement of the other end\n",
                               "  stretch: {node_set: wall.end, dofs: [r]}\n"));
   o = run_cli("check " + axisym);
-  EXPECT_NE(o.output.find("part 'wall': no boundary condition holds z, so it is free to slide along the axis"),
+  EXPECT_NE(o.output.find("part 'wall': no boundary condition holds z, so it is free to slide along the axis (a "
+                          "singular tangent): hold z of at least one node, e.g. of `wall.start`"),
             std::string::npos)
       << o.output;
+}
+
+TEST(BadInput, TheRigidMotionFixComesFromThePartsOwnSets) {
+  // A sphere has no `x0` or `y0`: held at its south pole only, it may turn about three lines. Its
+  // north pole held in x and y stops the turns about x and y (both poles stay on the z axis as it
+  // inflates), and nothing but a node off the axis stops the turn about z: named by its index in
+  // the part, with the node set that names it. The proposal was "x0/y0 of `<part>`".
+  const std::string sphere =
+      "units: {length: mm, force: N}\nmaterials:\n  latex: {type: neo_hookean, mu: 0.2 MPa}\n"
+      "parts:\n  balloon: {element: membrane, material: latex, thickness: 0.1 mm, mesh: {type: sphere, radius: 5 mm, n: 6}}\n"
+      "boundary:\n  south: {node_set: balloon.south, dofs: [x, y, z]}\n"
+      "loads:\n  p: {type: pressure, part: balloon}\nsteps:\n  - {name: inflate, increments: 1, set: {p: 5 kPa}}\n";
+  const Outcome o = run_cli("check " + write_deck("rigid-sphere", sphere));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("hold enough DOFs to stop them, e.g. x and y of `balloon.north` (on x = 0 and y = 0) and y of "
+                          "node 24 of part 'balloon', at (5, 0, 0) (as a node set: `{part: balloon, nodes: [24]}`): held "
+                          "so, the body can still inflate freely"),
+            std::string::npos)
+      << o.output;
+  // Held as proposed, it is held.
+  const std::string held = replace(sphere, "boundary:\n",
+                                   "node_sets:\n  turn: {part: balloon, nodes: [24]}\nboundary:\n"
+                                   "  north: {node_set: balloon.north, dofs: [x, y]}\n  turn: {node_set: turn, dofs: [y]}\n");
+  const Outcome h = run_cli("check " + write_deck("rigid-sphere-held", held));
+  EXPECT_EQ(h.exit_code, 0) << h.output;
+  EXPECT_EQ(h.output.find("warning"), std::string::npos) << h.output;
 }
 
 TEST(BadInput, ACylindricalFrameThatDoesNotFitItsSurfaceIsWarnedAbout) {
