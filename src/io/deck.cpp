@@ -879,10 +879,22 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
   read_steps(deck, m, solver);
   read_output(deck, m);
-  for (const std::string& w : unheld_rigid_motions(m))
-    m.warnings.push_back(format_location(deck.has("boundary") ? deck["boundary"].where() : deck.where(), w));
-  for (const std::string& w : frame_axis_warnings(m))
-    m.warnings.push_back(format_location(deck.has("parts") ? deck["parts"].where() : deck.where(), w));
+  // A body free to move is said at `boundary`, where the fix goes; without that section, at the
+  // first step the body takes part in, where its tangent is singular.
+  for (const UnheldBody& w : unheld_rigid_motions(m)) {
+    SourceLocation at = deck.where();
+    if (deck.has("boundary")) {
+      at = deck["boundary"].where();
+    } else if (const std::vector<DeckNode> steps = deck["steps"].items(); !steps.empty()) {
+      int first = static_cast<int>(steps.size()) - 1;
+      for (int p : w.parts) first = std::min(first, m.parts[p].enter_step);
+      at = steps[first].where();
+    }
+    m.warnings.push_back(format_location(at, w.message));
+  }
+  // A frame that does not fit its surface: at the part's `frame`.
+  for (const FrameMisfit& f : frame_axis_warnings(m))
+    m.warnings.push_back(format_location(deck["parts"][m.parts[f.part].name]["frame"].where(), f.message));
   m.fingerprint = deck_fingerprint(deck, m, &m.fingerprint_places);
   return m;
 }

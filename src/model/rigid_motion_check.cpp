@@ -58,7 +58,7 @@ std::vector<RigidMotion> free_rigid_motions(const Model& m, const std::vector<in
   return out;
 }
 
-std::vector<std::string> unheld_rigid_motions(const Model& m) {
+std::vector<UnheldBody> unheld_rigid_motions(const Model& m) {
   const int parts = static_cast<int>(m.parts.size());
   // Bodies: parts joined by a shared node.
   std::vector<int> parent(parts), owner(m.num_nodes(), -1);
@@ -84,13 +84,17 @@ std::vector<std::string> unheld_rigid_motions(const Model& m) {
       for (int d : b.dofs)
         if (d < dpn) held[n] |= 1u << d;
 
-  std::vector<std::string> out;
+  std::vector<UnheldBody> out;
+  // Without any boundary condition the deck may lack the section itself: say where they go.
+  const std::string none =
+      m.boundaries.empty() ? " (the deck has no boundary conditions yet: add them in a `boundary` section)" : "";
   for (int body = 0; body < parts; ++body) {
     if (find(parent, body) != body || in_contact[body]) continue;
-    std::vector<int> nodes;
+    std::vector<int> nodes, members;
     std::string names;
     for (int p = 0; p < parts; ++p)
       if (find(parent, p) == body) {
+        members.push_back(p);
         names += (names.empty() ? "'" : ", '") + m.parts[p].name + "'";
         for (int n : m.parts[p].nodes)
           if (owner[n] == p) nodes.push_back(n);
@@ -101,10 +105,10 @@ std::vector<std::string> unheld_rigid_motions(const Model& m) {
       bool z = false;
       for (int n : nodes) z = z || (held[n] & 2u);
       if (!z)
-        out.push_back(fmt::format("{} {}: no boundary condition holds z, so {} free to slide along the axis (a "
-                                  "singular tangent): hold z of at least one node, e.g. {}",
-                                  one ? "part" : "parts", names, one ? "it is" : "they are",
-                                  axial_hold(m, nodes)));
+        out.push_back({members, fmt::format("{} {}: no boundary condition holds z, so {} free to slide along the "
+                                            "axis (a singular tangent): hold z of at least one node, e.g. {}{}",
+                                            one ? "part" : "parts", names, one ? "it is" : "they are",
+                                            axial_hold(m, nodes), none)});
       continue;
     }
     const std::vector<RigidMotion> free = free_rigid_motions(m, nodes, held);
@@ -116,11 +120,12 @@ std::vector<std::string> unheld_rigid_motions(const Model& m) {
                : r.located ? fmt::format("rotation about the line parallel to {} through ({:.4g}, {:.4g}, {:.4g})",
                                          kAxis[r.k], r.through.x(), r.through.y(), r.through.z())
                            : fmt::format("rotation about {}", kAxis[r.k]));
-    out.push_back(fmt::format("{} {}: the boundary conditions leave {} free to move rigidly ({}), so the tangent is "
-                              "singular and the run fails or drifts by an arbitrary rigid motion: hold enough DOFs to "
-                              "stop {}, e.g. {}",
-                              one ? "part" : "parts", names, one ? "it" : "them", list,
-                              free.size() > 1 ? "them" : "it", rigid_motion_fix(m, nodes, held)));
+    const std::string fix = rigid_motion_fix(m, nodes, held);
+    out.push_back({members, fmt::format("{} {}: the boundary conditions leave {} free to move rigidly ({}), so the "
+                                        "tangent is singular and the run fails or drifts by an arbitrary rigid motion: "
+                                        "hold enough DOFs to stop {}{}{}",
+                                        one ? "part" : "parts", names, one ? "it" : "them", list,
+                                        free.size() > 1 ? "them" : "it", fix.empty() ? "" : ", e.g. " + fix, none)});
   }
   return out;
 }

@@ -28,10 +28,16 @@ struct RigidMotion {
 std::vector<RigidMotion> free_rigid_motions(const Model& m, const std::vector<int>& nodes,
                                             const std::vector<unsigned>& held);
 
-/// One message per body (parts joined by shared nodes) that the boundary conditions leave free to
-/// move rigidly: 3-D, the free_rigid_motions; axisymmetric, the translation along z. Each names
-/// what to hold (model/rigid_motion_fix.hpp). Bodies in a contact pair are left out (the contact
-/// may hold them). Empty when every body is held.
-std::vector<std::string> unheld_rigid_motions(const Model& m);
+/// A body (parts joined by shared nodes) free to move rigidly: its parts and the message.
+struct UnheldBody {
+  std::vector<int> parts;
+  std::string message;
+};
+
+/// One message per body that the boundary conditions leave free to move rigidly: 3-D, the
+/// free_rigid_motions; axisymmetric, the translation along z. Each names what to hold
+/// (model/rigid_motion_fix.hpp). Bodies in a contact pair are left out (the contact may hold
+/// them). Empty when every body is held.
+std::vector<UnheldBody> unheld_rigid_motions(const Model& m);
 
 }  // namespace tunica

@@ -418,6 +418,24 @@ TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
       << o.output;
 }
 
+TEST(BadInput, ABodyFreeToMoveWithoutABoundarySectionIsSaidAtItsFirstStep) {
+  // The axisymmetric example without its `boundary` (and the prestretch that sets one): nothing
+  // holds z. Said at the first step, where the tangent is singular, not at the deck's 1:1.
+  std::string text = read_text(kExample);
+  text = text.substr(0, text.find("boundary:\n")) + text.substr(text.find("loads:\n"));
+  text = replace(text, "  - name: prestretch\n    increments: 6\n    set: {stretch: 0.6 mm}", "");
+  text = replace(text, "    - {quantity: reaction_z, node_set: wall.end, name: axial_force, unit: N}\n", "");
+  const std::string deck = write_deck("no-boundary", text);
+  const Outcome o = run_cli("check " + deck);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("no-boundary.yaml:" + std::to_string(line_of(text, "  - name: inflation")) +
+                          ":5: key 'steps[0]': part 'wall': no boundary condition holds z, so it is free to slide along "
+                          "the axis (a singular tangent): hold z of at least one node, e.g. of `wall.start` (the deck "
+                          "has no boundary conditions yet: add them in a `boundary` section)"),
+            std::string::npos)
+      << o.output;
+}
+
 TEST(BadInput, TheRigidMotionFixComesFromThePartsOwnSets) {
   // A sphere has no `x0` or `y0`: held at its south pole only, it may turn about three lines. Its
   // north pole held in x and y stops the turns about x and y (both poles stay on the z axis as it
@@ -454,7 +472,9 @@ TEST(BadInput, ACylindricalFrameThatDoesNotFitItsSurfaceIsWarnedAbout) {
       write_deck("frame-axis", replace(read_text(quarter), frame, "frame: {type: cylindrical, axis: [1, 0, 0]}"));
   Outcome o = run_cli("check " + along_x);
   EXPECT_EQ(o.exit_code, 0) << o.output;
-  EXPECT_NE(o.output.find("frame-axis.yaml:15:3: key 'parts': part 'wall': its cylindrical frame (axis [1, 0, 0] "
+  // At the part's own `frame` (it stood at `parts`).
+  EXPECT_NE(o.output.find("frame-axis.yaml:" + std::to_string(line_of(read_text(along_x), "    frame: {")) +
+                          ":12: key 'parts.wall.frame': part 'wall': its cylindrical frame (axis [1, 0, 0] "
                           "through (0, 0, 0)) does not fit the surface over"),
             std::string::npos)
       << o.output;
