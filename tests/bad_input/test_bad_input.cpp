@@ -154,6 +154,14 @@ TEST(BadInput, AnEmptyDofListIsAnErrorAtItsLine) {
                "DOFs are r and z, and slope_r and slope_z on shells), e.g. `dofs: [z]`");
 }
 
+TEST(BadInput, ADofListedTwiceIsAnErrorAtItsItem) {
+  // `[z, z]` was read as `[z]`; most likely another DOF was meant.
+  expect_error("dof-twice", "stretch: {node_set: wall.end, dofs: [z]}", "stretch: {node_set: wall.end, dofs: [z, z]}",
+               "boundary.stretch.dofs[1]",
+               "DOF 'z' is listed twice: list each DOF once (axisymmetric DOFs are r and z, and slope_r and slope_z on "
+               "shells)");
+}
+
 TEST(BadInput, ATubeWithoutX0SaysWhyAndProposesNoOtherSet) {
   // The 3-D quarter tube with its sector written 1.5708 (rad, not exactly π/2): its last column
   // is its x0 by construction, so the deck is valid. With 85 deg there is no column at 90°:
