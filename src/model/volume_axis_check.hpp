@@ -19,8 +19,9 @@ namespace tunica {
 /// exactly 0 for the cases above), the loop's edges in planes that hold the axis left out.
 /// Otherwise why not, for the first loop that fails: its number of edges, centre and a node, the
 /// share its cap would miss (in the deck's units), whether the loop lies in a plane at all, and
-/// the likely fix (the axis normal to the loops' planes, the tube's axis, or the line through the
-/// centroids of a tube's two ends). Empty for a part that is not a 3-D surface.
+/// the first likely fix that fits every loop: the direction the part's normals are most nearly
+/// perpendicular to (a tube's axis), the loop's normal, the line through the centroids of a
+/// tube's two ends, the axis through the loop's centroid. Empty for a part that is not a 3-D surface.
 std::string volume_axis_misfit(const Model& m, int part, const VolumeMeasure& how);
 
 }  // namespace tunica
