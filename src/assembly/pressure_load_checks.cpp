@@ -7,59 +7,16 @@
 #include <map>
 #include <numeric>
 
+#include "model/open_edges.hpp"
+
 namespace tunica {
 
-namespace {
-
-/// Union-find over node numbers, for the connected chains of open edges.
-struct Chains {
-  std::map<int, int> parent;
-  int find(int a) {
-    auto it = parent.find(a);
-    if (it == parent.end()) return parent[a] = a;
-    if (it->second == a) return a;
-    return it->second = find(it->second);
-  }
-  void join(int a, int b) { parent[find(a)] = find(b); }
-};
-
-/// The open edges of a 3-D surface part (corner edges used by one element, as that element runs
-/// them) and its longest edge; none for a part that is not a surface.
-std::vector<std::pair<int, int>> open_edges_of(const Model& m, int part, double& longest) {
-  struct Use {
-    int count = 0;
-    std::pair<int, int> directed;  // a → b as its element runs it
-  };
-  std::map<std::pair<int, int>, Use> edges;  // by sorted node pair
-  longest = 0;
-  for (const ElementBlock& b : m.parts[part].blocks) {
-    if (!is_surface_kind(b.kind)) return {};
-    const int c = corner_nodes(b.kind);
-    for (int e = 0; e < b.size(); ++e) {
-      const int* en = b.element(e);
-      for (int k = 0; k < c; ++k) {
-        const int a = en[k], z = en[(k + 1) % c];
-        auto& rec = edges[{std::min(a, z), std::max(a, z)}];
-        if (rec.count++ == 0) rec.directed = {a, z};
-        longest = std::max(longest, (m.X[a] - m.X[z]).norm());
-      }
-    }
-  }
-  std::vector<std::pair<int, int>> open;
-  for (const auto& [key, rec] : edges)
-    if (rec.count == 1) open.push_back(rec.directed);
-  return open;
-}
-
-}  // namespace
-
 std::vector<UnheldEdges> unheld_open_edges(const Model& m, int part) {
-  double longest = 0;
-  const auto open = open_edges_of(m, part, longest);
+  const auto open = open_edges(m, part);
   std::vector<char> held(m.num_nodes(), 0);
   for (const Boundary& b : m.boundaries)
     for (int n : m.node_sets[b.node_set].nodes) held[n] = 1;
-  Chains chains;
+  NodeChains chains;
   for (const auto& e : open) chains.join(e.first, e.second);
   std::map<int, UnheldEdges> by_chain;
   std::map<int, bool> any_held;
@@ -80,11 +37,11 @@ std::vector<UnheldEdges> unheld_open_edges(const Model& m, int part) {
   return out;
 }
 
-double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges) {
+double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_count) {
   // Edges of the corner polygons, counted over the part; an open edge is used once, with the
   // direction its element gives it.
   double longest = 0;
-  const std::vector<std::pair<int, int>> open = open_edges_of(m, part, longest);
+  const std::vector<std::pair<int, int>> open = open_edges(m, part, &longest);
   // The plane through p₀ and an edge; an edge whose plane a neighbouring open edge shares is
   // closed by that plane (a symmetry plane, an end through p₀).
   const auto plane = [&](const std::pair<int, int>& e) -> Eigen::Vector3d {
@@ -113,14 +70,14 @@ double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, i
           if (!nj.isZero() && off <= 1e-6 * scale) needs_cap[i] = 0;
         }
   }
-  Chains chains;
+  NodeChains chains;
   int counted = 0;
   for (int i = 0; i < static_cast<int>(open.size()); ++i)
     if (needs_cap[i]) {
       chains.join(open[i].first, open[i].second);
       ++counted;
     }
-  if (open_edges) *open_edges = counted;
+  if (open_count) *open_count = counted;
   // Per chain: Newell's normal and centroid give its plane; the cap is fanned from the point of
   // that plane nearest p₀, and its volume about p₀ is Σ det[c − p₀, x_b − p₀, x_a − p₀] / 6 over its
   // edges (a cap runs against its surface's edges to close it outward).
@@ -176,13 +133,22 @@ std::vector<std::string> pressure_load_warnings(const System& system) {
           "unresisted by anything but the membrane; close the surface, or hold the edge in `boundary`.",
           load.name, part.name, c.edges, c.centre(0), c.centre(1), c.centre(2), tag)));
     }
+    // The fix depends on whether the load already flips the side: then the normals point out and
+    // `flip: true` is what turned the pressure inward.
     if (V < -tiny)
       out.push_back(format_location(load.where, fmt::format(
           "load '{}' pushes its surface (part '{}') inward: the volume on the side its pressure pushes away from is "
-          "{:.6g} {} at the reference state, negative, so the normals point into the volume the surface encloses. "
-          "A pressure inside a vessel or balloon pushes outward: set `flip: true` on the load (or reverse the "
-          "elements' node order in the mesh); a pressure from outside is meant this way.",
-          load.name, part.name, V, unit)));
+          "{:.6g} {} at the reference state, negative, so {}. A pressure inside a vessel or balloon pushes outward: "
+          "{}; a pressure from outside is meant this way.",
+          load.name, part.name, V, unit,
+          load.sign < 0 ? "the pressure acts against the elements' normals, which point out of the volume the "
+                          "surface encloses, because the load has `flip: true`"
+                        : "the normals point into the volume the surface encloses",
+          load.sign < 0 ? std::string("remove `flip: true` from the load (or set `flip: false`)")
+          : m.geometry == Geometry::axisymmetric
+              ? "set `flip: true` on the load (or run the meridian the other way: swap the mesh's `from` and `to`, "
+                "or `start_angle` and `end_angle`)"
+              : "set `flip: true` on the load (or reverse the elements' node order in the mesh)")));
     // The enclosed volume matters where it is reported or controlled.
     bool measured = false;
     for (const HistoryRequest& h : m.output.history) measured |= h.quantity == "volume" && h.load == l;

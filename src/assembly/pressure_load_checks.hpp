@@ -3,7 +3,8 @@
 // found at the reference state (`tunica check` and `tunica run` print them):
 //  - the load pushes its surface inward: the volume on the side the pressure pushes away from,
 //    theory manual (6.6)–(6.7), is negative, so the surface's normals point into the volume it
-//    encloses (a pressure from outside is meant that way; one inside a vessel is not);
+//    encloses, or `flip: true` turned the pressure against normals that point out of it (a
+//    pressure from outside is meant that way; one inside a vessel is not);
 //  - a 3-D load whose volume is reported (history `volume`) or controlled (`volume_control`),
 //    measured about a point (no `volume_axis`), on a surface with open edges that no
 //    plane through p₀ closes: the caps that would close it are missing from the enclosed volume
@@ -33,7 +34,7 @@ std::vector<std::string> pressure_load_warnings(const System& system);
 /// measures it (about the point p₀), each cap taken as the plane region its edges bound, from the
 /// point of its plane nearest p₀ (exact for planar caps). Open edges that lie with their
 /// neighbours in one plane through p₀ (symmetry planes, an end at p₀) need no cap and are
-/// left out. `open_edges` receives the number of open edges counted.
-double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_edges = nullptr);
+/// left out. `open_count` receives the number of open edges counted.
+double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_count = nullptr);
 
 }  // namespace tunica

@@ -33,19 +33,50 @@ std::string lower(std::string_view s) {
 
 }  // namespace
 
+namespace {
+
+std::string digits_of(const std::string& s) {
+  std::string d;
+  for (char c : s)
+    if (std::isdigit(static_cast<unsigned char>(c))) d += c;
+  return d;
+}
+
+/// How far `name` is from `known` (both lower case), if `known` is near enough to be its typo;
+/// -1 if not. Names that share a prefix up to a dot (`wall.x0`, `wall.y0`: the sets of one part)
+/// are compared by what follows it, as file names are by their stems: at most one edit for 3 to
+/// 6 characters, two from 7 on, none below 3, and the same digits (`x0` and `y0`, `ring1` and
+/// `ring2` are other sets, not typos). Others by the whole name: at most 1 edit for names of up to
+/// 5 characters, 2 for longer ones, and fewer edits than the name has characters.
+long typo_distance(const std::string& name, const std::string& known) {
+  if (name == known) return 0;
+  const std::size_t dot = name.rfind('.');
+  if (dot != std::string::npos && dot + 1 < name.size() && known.size() > dot && known.compare(0, dot + 1, name, 0, dot + 1) == 0 &&
+      known.find('.', dot + 1) == std::string::npos) {
+    const std::string a = name.substr(dot + 1), b = known.substr(dot + 1);
+    const std::size_t allowed = a.size() < 3 ? 0 : a.size() < 7 ? 1 : 2;
+    const std::size_t d = edit_distance(a, b);
+    return d <= allowed && digits_of(a) == digits_of(b) ? static_cast<long>(d) : -1;
+  }
+  const std::size_t d = edit_distance(name, known);
+  const std::size_t allowed = name.size() <= 5 ? 1 : 2;
+  return d <= allowed && d < name.size() ? static_cast<long>(d) : -1;
+}
+
+}  // namespace
+
 std::string nearest_name(std::string_view name, const std::vector<std::string>& known) {
   constexpr std::size_t kLongest = 200;  // names longer than this are not compared (a bound on the work)
   if (name.empty() || name.size() > kLongest) return "";
   const std::string low = lower(name);
   std::string best;
-  std::size_t best_d = 0;
+  long best_d = -1;
   for (const auto& k : known) {
     if (k == name || k.size() > kLongest) continue;
-    const std::size_t d = lower(k) == low ? 0 : edit_distance(low, lower(k));
-    if (best.empty() || d < best_d) best = k, best_d = d;
+    const long d = typo_distance(low, lower(k));
+    if (d >= 0 && (best_d < 0 || d < best_d)) best = k, best_d = d;
   }
-  const std::size_t allowed = name.size() <= 5 ? 1 : 2;
-  return !best.empty() && (best_d == 0 || (best_d <= allowed && best_d < name.size())) ? best : "";
+  return best;
 }
 
 namespace {
@@ -55,13 +86,6 @@ std::pair<std::string, std::string> stem_and_extension(std::string_view name) {
   const std::size_t dot = name.rfind('.');
   if (dot == std::string_view::npos || dot == 0) return {lower(name), ""};
   return {lower(name.substr(0, dot)), lower(name.substr(dot))};
-}
-
-std::string digits_of(const std::string& s) {
-  std::string d;
-  for (char c : s)
-    if (std::isdigit(static_cast<unsigned char>(c))) d += c;
-  return d;
 }
 
 }  // namespace

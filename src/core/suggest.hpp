@@ -10,7 +10,9 @@ namespace tunica {
 /// The name in `known` nearest to `name` by edit distance (a swap of two neighbouring letters
 /// counts as one edit), if it is near enough to be a typo: at most 1 edit for names of up to
 /// 5 characters, 2 for longer ones, and fewer edits than the name has characters; a name
-/// differing only in letter case always is. "" if none is.
+/// differing only in letter case always is. Names that share a prefix up to a dot (the node sets
+/// of one part, `wall.x0` and `wall.y0`) are compared by the rest, with the rule of
+/// nearest_file_name's stems: `wall.y0` is not offered for `wall.x0`. "" if none is.
 std::string nearest_name(std::string_view name, const std::vector<std::string>& known);
 
 /// The file name in `files` that `name` (a file name without folder) is likely a typo of, or ""

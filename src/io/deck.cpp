@@ -11,11 +11,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <set>
 #include <sstream>
 #include <tuple>
 
 #include "core/bounded_file.hpp"
+#include "core/printable.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_names.hpp"
@@ -26,6 +28,7 @@
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/rigid_motion_check.hpp"
+#include "model/volume_axis_check.hpp"
 #include "quantities/history_quantity.hpp"
 
 namespace tunica {
@@ -80,7 +83,7 @@ const ComponentSpec& boundary_spec() {
       "linearly within the step to the value the step's `set` gives, and held after.",
       {required(text("node_set", "name of a node set")),
        required(structured("dofs", "list",
-                           "DOFs among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`; nodes of "
+                           "at least one DOF among `r`, `z` (axisymmetric) or `x`, `y`, `z` (3-D), e.g. `[z]`; nodes of "
                            "`axisymmetric_shell` parts also `slope_r`, `slope_z`: the change of the meridian slope "
                            "∂r/∂S, ∂z/∂S (dimensionless; a boundary that mixes slopes and positions can only be 0)"))}};
   return s;
@@ -102,7 +105,9 @@ const ComponentSpec& load_spec() {
        with_default(boolean("flip", "act along −n instead"), "false"),
        with_default(numbers("volume_point", Dimension::length, 3, "3-D: the point p₀ of the volume measure"),
                     "[0, 0, 0]"),
-       numbers("volume_axis", Dimension::dimensionless, 3, "3-D: measure the volume about this axis through p₀")}};
+       numbers("volume_axis", Dimension::dimensionless, 3,
+               "3-D: measure the volume about this axis through p₀; each open end of the surface must lie in a "
+               "plane normal to it, or one whose middle it passes through, or one that holds it")}};
   return s;
 }
 
@@ -127,7 +132,8 @@ const ComponentSpec& history_spec() {
       "One column of history.csv, written after each converged increment. The column is `name` "
       "(default: the quantity) followed by `_<unit>` for dimensional quantities.",
       {required(text("quantity", "what to record (see the table of quantities)")),
-       text("name", "column name without the unit suffix"), text("part", "part, for element quantities"),
+       text("name", "column name without the unit suffix: any printable text but a comma or a double quote"),
+       text("part", "part, for element quantities"),
        text("node_set", "node set, for node quantities"), text("load", "load, for `pressure`"),
        text("contact", "contact pair, for contact quantities"),
        one_of(text("reduce", "how several points combine (default: sum for reactions, mean otherwise)"),
@@ -195,6 +201,75 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
 
 std::vector<std::string> names(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
 
+/// A generated meridian that is wrong in a way an angle written without a unit explains
+/// (`end_angle: 90` is 90 rad): if the mesh has such angles, the error stands at the first one's
+/// key, says `what` it did and proposes degrees, saying whether the meridian would then stay at
+/// r ≥ 0; else it returns.
+void fail_at_bare_angle(const DeckNode& mesh, const MeridianType& type, const Params& mp, const std::string& what) {
+  std::vector<std::string> bare;  // angle keys given as plain numbers other than 0
+  for (const ParamSpec& spec : type.spec.params) {
+    double value = 0;
+    std::string unit;
+    if (spec.dim == Dimension::angle && mesh.has(spec.name) && mesh[spec.name].is_scalar() &&
+        split_quantity(mesh[spec.name].as_string(), value, unit) && unit.empty() && value != 0)
+      bare.push_back(spec.name);
+  }
+  if (bare.empty()) return;
+  // Read in degrees instead, would the meridian stay at r ≥ 0?
+  Params degrees = mp;
+  for (const std::string& k : bare) {
+    Params::Value v;
+    v.nums = {mp.number(k) * std::numbers::pi / 180};
+    v.written = mp.written(k);
+    v.loc = mp.where(k);
+    degrees.set(k, std::move(v));
+  }
+  bool fits = true;
+  try {
+    for (const Eigen::Vector2d& x : type.make(degrees)) fits = fits && x(0) >= 0;
+  } catch (const std::exception&) {
+    fits = false;
+  }
+  const std::string& key = bare.front();
+  const std::string w = mp.written(key);
+  std::string others;
+  for (std::size_t k = 1; k < bare.size(); ++k)
+    others += fmt::format("{}`{} deg` for `{}`", others.empty() ? " (and " : ", ", mp.written(bare[k]), bare[k]);
+  if (!others.empty()) others += ", also without a unit)";
+  mesh[key].fail(fmt::format(
+      "{} has no unit and is read in radians ({} rad = {:.4g} deg), which {}: a plain number is radians; {}{}", w, w,
+      mp.number(key) * 180 / std::numbers::pi, what,
+      fits ? fmt::format("for degrees write `{} deg`", w)
+           : fmt::format("write the unit, e.g. `{} deg` (in degrees the meridian would still reach r < 0: check "
+                         "`center` and `radius` too)",
+                         w),
+      others));
+}
+
+/// Refuses a generated meridian that turns more than once (an arc of more than 360°: its nodes
+/// overlap) or reaches r < 0, at a bare angle's key if one explains it (fail_at_bare_angle).
+void check_meridian(const DeckNode& mesh, const MeridianType& type, const Params& mp, const Meridian& points,
+                    const UnitSystem& units) {
+  if (mp.has("start_angle") && mp.has("end_angle")) {
+    const double span = std::abs(mp.number("end_angle") - mp.number("start_angle")) * 180 / std::numbers::pi;
+    if (span > 360 * (1 + 1e-9)) {
+      fail_at_bare_angle(mesh, type, mp, fmt::format("makes the arc span {:.6g} deg, more than a full turn", span));
+      mesh["end_angle"].fail(fmt::format("the arc spans {:.6g} deg, more than a full turn: its nodes would overlap "
+                                         "(an arc from `start_angle` to `end_angle` covers at most 360 deg)",
+                                         span));
+    }
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i](0) < 0) {
+      const std::string at =
+          fmt::format("node {} at a negative radius r = {:g} {}", i, points[i](0), units.display_unit(Dimension::length));
+      fail_at_bare_angle(mesh, type, mp, "puts " + at);
+      mesh.fail(fmt::format("the meridian has {}: an axisymmetric meridian stays at r ≥ 0 (check `center`, `radius` "
+                            "and the angles, or `from` and `to`)",
+                            at));
+    }
+}
+
 void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
   const DeckNode mesh = node.required("mesh");
   if (!mesh.is_map()) mesh.fail("expected a map with `type: line` or `type: arc`");
@@ -209,10 +284,9 @@ void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
   if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
     mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
   const Meridian points = gen->second.make(mp);
+  check_meridian(mesh, gen->second, mp, points, m.units);
   const int first = m.num_nodes();
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (points[i](0) < 0)
-      mesh.fail(fmt::format("node {} has a negative radius r = {:g} (angles without a unit are radians)", i, points[i](0)));
     m.X.push_back(Eigen::Vector3d(points[i](0), points[i](1), 0.0));
     part.nodes.push_back(first + static_cast<int>(i));
   }
@@ -343,7 +417,14 @@ void read_node_sets(const DeckNode& deck, Model& m) {
 
 int node_set_ref(const Params& p, const std::string& key, const Model& m) {
   const int s = m.find_node_set(p.text(key));
-  if (s < 0) p.fail(key, "undefined node set '" + p.text(key) + "' " + known_names(p.text(key), names_of(m.node_sets), "node sets"));
+  if (s < 0) {
+    // A set the part's generator makes only for other parameters (a tube's `x0`): say why.
+    const auto absent = m.absent_node_sets.find(p.text(key));
+    p.fail(key, "undefined node set '" + p.text(key) + "'" +
+                    (absent != m.absent_node_sets.end() ? ": its part's mesh has none, since " + absent->second + " "
+                                                        : std::string(" ")) +
+                    known_names(p.text(key), names_of(m.node_sets), "node sets"));
+  }
   return s;
 }
 
@@ -356,20 +437,25 @@ void read_boundaries(const DeckNode& deck, Model& m) {
     const std::vector<DeckNode> list = dofs.is_sequence() ? dofs.items() : std::vector<DeckNode>{dofs};
     std::vector<std::string> dof_names = m.dof_names();
     if (m.geometry == Geometry::axisymmetric) dof_names.insert(dof_names.end(), {"slope_r", "slope_z"});
+    const std::string allowed = m.geometry == Geometry::axisymmetric
+                                    ? "axisymmetric DOFs are r and z, and slope_r and slope_z on shells"
+                                    : "3-D DOFs are x, y and z";
+    // An empty list would hold nothing, and a step's `set` of the boundary would do nothing.
+    if (list.empty())
+      dofs.fail("the list of DOFs is empty, so the boundary would hold nothing: name the DOFs it holds (" + allowed +
+                "), e.g. `dofs: [z]`");
     for (const auto& d : list) {
       const std::string s = d.as_string();
       auto it = std::find(dof_names.begin(), dof_names.end(), s);
-      if (it == dof_names.end())
-        d.fail("unknown DOF '" + s + "' (" +
-               (m.geometry == Geometry::axisymmetric ? "axisymmetric DOFs are r and z, and slope_r and slope_z on shells"
-                                                     : "3-D DOFs are x, y and z") +
-               ")");
+      if (it == dof_names.end()) d.fail("unknown DOF '" + s + "' (" + allowed + ")");
       const int c = static_cast<int>(it - dof_names.begin());
       if (c >= m.dofs_per_node())
         for (int n : m.node_sets[b.node_set].nodes)
           if (!m.has_slopes(n))
             d.fail("DOF '" + s + "': node set '" + p.text("node_set") +
                    "' has nodes without slopes (only nodes of axisymmetric_shell parts have slope_r and slope_z)");
+      if (std::find(b.dofs.begin(), b.dofs.end(), c) != b.dofs.end())
+        d.fail("DOF '" + s + "' is listed twice: list each DOF once (" + allowed + ")");
       b.dofs.push_back(c);
     }
     m.boundaries.push_back(std::move(b));
@@ -412,6 +498,7 @@ void read_loads(const DeckNode& deck, Model& m) {
     if (m.geometry == Geometry::axisymmetric && (node.has("volume_point") || node.has("volume_axis")))
       p.fail(node.has("volume_point") ? "volume_point" : "volume_axis",
              "an axisymmetric volume is always measured about the z axis");
+    if (const std::string why = volume_axis_misfit(m, part, load.volume); !why.empty()) p.fail("volume_axis", why);
     m.loads.push_back(std::move(load));
   }
 }
@@ -508,6 +595,31 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     }
     m.steps.push_back(std::move(s));
   }
+}
+
+/// A history column's `name` goes into the header of history.csv as it is: a comma would split
+/// the column, a double quote or a line break corrupt the row for every CSV reader (pandas, the
+/// csv module, ParaView) and every line-based tool. Such a name is refused rather than quoted:
+/// RFC 4180 quotes would read back in pandas, but not in numpy.loadtxt, a spreadsheet's default
+/// import or `cut -d,`, and a column name never needs them.
+void check_column_name(const Params& h, const std::string& key) {
+  const std::string& name = h.text(key);
+  if (name.empty()) h.fail(key, "the column name is empty: leave `name` out for the quantity's own name, or give one");
+  std::string bad, fixed;
+  for (const char c : name) {
+    const bool wrong = c == ',' || c == '"' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+    if (wrong && bad.find(c) == std::string::npos) bad += c;
+    fixed += wrong ? '_' : c;
+  }
+  if (bad.empty()) return;
+  std::string which;
+  for (const char c : bad)
+    which += std::string(which.empty() ? "" : ", ") +
+             (c == ',' ? "a comma" : c == '"' ? "a double quote" : c == '\n' ? "a line break" : "a control character");
+  h.fail(key, fmt::format("'{}' holds {}, which would corrupt the header of history.csv (a comma splits the column; "
+                          "a quote or a line break breaks the row): a column name may hold any printable character "
+                          "but a comma and a double quote, e.g. `{}`",
+                          printable(name), which, printable(fixed)));
 }
 
 void read_output(const DeckNode& deck, Model& m) {
@@ -629,6 +741,7 @@ void read_output(const DeckNode& deck, Model& m) {
     } else if (h.has("unit")) {
       h.fail("unit", "quantity '" + r.quantity + "' is dimensionless");
     }
+    if (h.has("name")) check_column_name(h, "name");
     r.column = (h.has("name") ? h.text("name") : r.quantity) + suffix;
     if (!columns.insert(r.column).second)
       node.fail("duplicate history column '" + r.column + "'" +
@@ -768,10 +881,22 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
   read_steps(deck, m, solver);
   read_output(deck, m);
-  for (const std::string& w : unheld_rigid_motions(m))
-    m.warnings.push_back(format_location(deck.has("boundary") ? deck["boundary"].where() : deck.where(), w));
-  for (const std::string& w : frame_axis_warnings(m))
-    m.warnings.push_back(format_location(deck.has("parts") ? deck["parts"].where() : deck.where(), w));
+  // A body free to move is said at `boundary`, where the fix goes; without that section, at the
+  // first step the body takes part in, where its tangent is singular.
+  for (const UnheldBody& w : unheld_rigid_motions(m)) {
+    SourceLocation at = deck.where();
+    if (deck.has("boundary")) {
+      at = deck["boundary"].where();
+    } else if (const std::vector<DeckNode> steps = deck["steps"].items(); !steps.empty()) {
+      int first = static_cast<int>(steps.size()) - 1;
+      for (int p : w.parts) first = std::min(first, m.parts[p].enter_step);
+      at = steps[first].where();
+    }
+    m.warnings.push_back(format_location(at, w.message));
+  }
+  // A frame that does not fit its surface: at the part's `frame`.
+  for (const FrameMisfit& f : frame_axis_warnings(m))
+    m.warnings.push_back(format_location(deck["parts"][m.parts[f.part].name]["frame"].where(), f.message));
   m.fingerprint = deck_fingerprint(deck, m, &m.fingerprint_places);
   return m;
 }

@@ -249,6 +249,7 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
       for (int n : nodes) g.push_back(global[n]);
       add_set(m, part.name + "." + name, g, mesh);
     }
+    for (const auto& [name, why] : sm.absent_sets) m.absent_node_sets[part.name + "." + name] = why;
     if (const std::string why = check_surface(sm, sm.surfaces.at(0)); !why.empty()) mesh.fail(why);
     add_blocks(sm.surfaces.at(0), global, false, part);
   }

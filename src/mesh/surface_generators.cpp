@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -37,6 +38,40 @@ void add_quad(SurfaceMesh::Surface& s, int a, int b, int c, int d, bool triangle
     s.triangles.push_back({a, b, d});
     s.triangles.push_back({b, c, d});
   }
+}
+
+/// The indices i < count of the node columns at θ = offset + step·i (column i of a tube) that lie
+/// at one of the angles `planes`, taken by index rather than by coordinate: a column within a
+/// thousandth of an element's angle of a plane counts as on it, so a sector written as 1.5708 for
+/// 90° (its last column 4·10⁻⁶ rad off x = 0) still has that column in `x0`.
+std::vector<int> columns_at(double offset, double step, int count, std::initializer_list<double> planes) {
+  std::vector<int> out;
+  for (double phi : planes) {
+    const double t = (phi - offset) / step;
+    const double i = std::round(t);
+    if (std::abs(t - i) <= 1e-3 && i >= 0 && i < count) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+/// θ of the planes y = 0 and x = 0 (0 and 2π both: a closed tube's column 0 is its column at 2π).
+const std::initializer_list<double> kOnY0 = {0.0, kPi, 2 * kPi};
+const std::initializer_list<double> kOnX0 = {kPi / 2, 3 * kPi / 2};
+
+/// The node set `name` of the nodes of columns `columns` of every ring (id(i, j)), or, when there
+/// are none, `why` as the reason the mesh has no such set.
+template <class Id>
+void add_column_set(SurfaceMesh& m, const std::string& name, const std::vector<int>& columns, int rings, const Id& id,
+                    const std::string& why) {
+  if (columns.empty()) {
+    m.absent_sets[name] = why;
+    return;
+  }
+  auto& set = m.node_sets[name];
+  for (int j = 0; j < rings; ++j)
+    for (int i : columns) set.push_back(id(i, j));
+  std::sort(set.begin(), set.end());
+  set.erase(std::unique(set.begin(), set.end()), set.end());
 }
 
 /// Node set of all nodes whose coordinate `axis` equals `value` within kPlaneTol·radius;
@@ -173,8 +208,23 @@ SurfaceMesh tube_mesh(double radius, double length, double sector, int around, i
       end.push_back(id(around, j));
     }
   }
-  add_plane_set(m, "x0", 0, 0.0, radius);
-  add_plane_set(m, "y0", 1, 0.0, radius);
+  // The symmetry-plane sets by column index (θ_i = sector·i/around), not by coordinate.
+  const double step = sector / around;
+  const double degrees = sector * 180 / kPi;
+  add_column_set(m, "y0", columns_at(0.0, step, columns, kOnY0), along + 1, id, "");  // column 0 always
+  add_column_set(
+      m, "x0", columns_at(0.0, step, columns, kOnX0), along + 1, id,
+      closed ? fmt::format("`x0` holds the nodes at θ = 90° and 270°, on the plane x = 0, and a closed tube has a "
+                           "column of nodes there only when `around` is a multiple of 4 (it is {})",
+                           around)
+      : degrees < 90 * (1 - 1e-9)
+          ? fmt::format("`x0` holds the nodes at θ = 90° and 270°, on the plane x = 0, and this tube's sector, {:.6g} "
+                        "deg, ends before 90° (a quarter tube is `sector: 90 deg`)",
+                        degrees)
+          : fmt::format("`x0` holds the nodes at θ = 90° and 270°, on the plane x = 0, and a sector tube has a column "
+                        "of nodes there only when 90 deg × around / sector is a whole number (here {:.6g}: sector {:.6g} "
+                        "deg, around {}), e.g. `sector: 90 deg`, or 180 deg with `around` even",
+                        90 * around / degrees, degrees, around));
   return m;
 }
 
@@ -189,6 +239,10 @@ SurfaceMesh sphere_mesh(double radius, int n, bool triangles) {
     if (!set.empty()) m.node_sets[name] = std::move(set);
   }
   add_plane_set(m, "equator", 2, 0.0, radius);
+  for (const std::string name : {"north", "south", "equator"})
+    if (!m.node_sets.count(name))
+      m.absent_sets[name] = fmt::format("`{}` exists for even n only: a sphere of odd n has no node {} (n = {})", name,
+                                        name == "equator" ? "on the plane z = 0" : "at the pole", n);
   return m;
 }
 
@@ -261,8 +315,21 @@ SurfaceMesh staggered_tube_mesh(double radius, double length, int around, int al
     bottom.push_back(id(i, 0));
     top.push_back(id(i, along));
   }
-  add_plane_set(m, "x0", 0, 0.0, radius);
-  add_plane_set(m, "y0", 1, 0.0, radius);
+  // By index, per ring: even rings at θ = 2π i/around, odd ones shifted by half an element.
+  const double step = 2 * kPi / around;
+  for (const auto& [name, planes] :
+       {std::pair<const char*, std::initializer_list<double>>{"y0", kOnY0}, {"x0", kOnX0}}) {
+    auto& set = m.node_sets[name];
+    for (int j = 0; j <= along; ++j)
+      for (int i : columns_at(j % 2 ? step / 2 : 0.0, step, around, planes)) set.push_back(id(i, j));
+    std::sort(set.begin(), set.end());
+    if (set.empty()) {  // only x0: every even ring has its column 0 at θ = 0
+      m.node_sets.erase(name);
+      m.absent_sets[name] = fmt::format("`{}` holds the nodes on the plane {} = 0, and a staggered tube has nodes "
+                                        "there only when `around` is even (it is {})",
+                                        name, name[0], around);
+    }
+  }
   return m;
 }
 
@@ -273,7 +340,10 @@ const std::map<std::string, SurfaceGeneratorType>& surface_generator_types() {
             "mesh", "tube",
             "Circular tube about the z axis from z = 0 to z = `length` over the angle sector [0, `sector`] "
             "(360 deg: the closed tube). Node sets: `bottom`, `top`; `start`, `end` (θ = 0, θ = sector) for an "
-            "open sector; `x0`, `y0` (nodes on the planes x = 0, y = 0) where there are any.",
+            "open sector; `y0` (the columns of nodes at θ = 0 and 180°, on the plane y = 0) and `x0` (at θ = 90° and "
+            "270°, on x = 0) where there are such columns: `x0` needs a column at 90° or 270° (a sector of 90 deg; "
+            "360 deg with `around` a multiple of 4). A column within a thousandth of an element of such an angle "
+            "counts (`sector: 1.5708`).",
             {kRadius, required(positive(number("length", Dimension::length, "length along z"))),
              with_default(at_most(positive(number("sector", Dimension::angle, "angle spanned (360 deg: closed tube)")),
                                   2 * kPi * (1 + 1e-9)),

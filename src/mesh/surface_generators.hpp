@@ -16,8 +16,10 @@ namespace tunica {
 /// shared across the seam), `around` elements around and `along` along, quads
 /// or triangles (each quad split along its diagonal, alternating direction).
 /// Node sets: "bottom" (z = 0), "top" (z = length), and for an open sector
-/// "start" (θ = 0) and "end" (θ = sector); also "x0" / "y0" for nodes on the
-/// planes x = 0 / y = 0 (sectors of 90°, 180°, ...).
+/// "start" (θ = 0) and "end" (θ = sector); also "y0" / "x0", the columns of nodes at θ = 0, 180°
+/// / 90°, 270° (on the planes y = 0 / x = 0), taken by column index: a column within a thousandth
+/// of an element's angle of such an angle is in the set (`sector: 1.5708` has `x0`). A tube
+/// without an `x0` says why in SurfaceMesh::absent_sets.
 SurfaceMesh tube_mesh(double radius, double length, double sector, int around, int along, bool triangles);
 
 /// Closed circular tube of triangles whose node rings alternate by half an element
@@ -26,7 +28,8 @@ SurfaceMesh tube_mesh(double radius, double length, double sector, int around, i
 /// inextensional (zero-stiffness) modes, which the union-jack split of coplanar quad
 /// halves has: a clamped tube can then be loaded from its stress-free state.
 /// 2 · around · along triangles; node sets "bottom", "top", and "x0" / "y0" (nodes on
-/// the planes x = 0 / y = 0: on the even rings when around is a multiple of 4).
+/// the planes x = 0 / y = 0, by index: "x0" on the even rings when around is a multiple of 4,
+/// on the odd ones when it is 2 more).
 SurfaceMesh staggered_tube_mesh(double radius, double length, int around, int along);
 
 /// Whole sphere of the given radius about the origin: the six faces of a cube

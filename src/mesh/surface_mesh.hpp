@@ -30,6 +30,9 @@ struct SurfaceMesh {
   std::vector<Eigen::Vector3d> nodes;
   std::vector<Surface> surfaces;
   std::map<std::string, std::vector<int>> node_sets;  ///< sorted, unique node indices
+  /// Node sets the generator makes for other parameters but not for these, each with why (a tube
+  /// whose sector ends short of 90° has no `x0`): for the message of a deck that names one.
+  std::map<std::string, std::string> absent_sets;
   /// Node tags as written in the mesh file (empty for generated meshes), one per node.
   std::vector<long> node_tags;
 };

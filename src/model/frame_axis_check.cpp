@@ -7,10 +7,11 @@
 
 namespace tunica {
 
-std::vector<std::string> frame_axis_warnings(const Model& m) {
-  std::vector<std::string> out;
+std::vector<FrameMisfit> frame_axis_warnings(const Model& m) {
+  std::vector<FrameMisfit> out;
   if (m.geometry == Geometry::axisymmetric) return out;
-  for (const Part& part : m.parts) {
+  for (int index = 0; index < static_cast<int>(m.parts.size()); ++index) {
+    const Part& part = m.parts[index];
     if (part.frame.type != FrameRule::Type::cylindrical || !part.material || part.material->isotropic()) continue;
     const Eigen::Vector3d a = part.frame.axis, p = part.frame.point;
     double area = 0, off = 0;
@@ -43,14 +44,14 @@ std::vector<std::string> frame_axis_warnings(const Model& m) {
     if (best(best.cwiseAbs().maxCoeff() == std::abs(best.x()) ? 0 : best.cwiseAbs().maxCoeff() == std::abs(best.y()) ? 1 : 2) < 0)
       best = -best;
     const auto round = [](double v) { return std::abs(v) < 5e-4 ? 0.0 : v; };
-    out.push_back(fmt::format(
+    out.push_back({index, fmt::format(
         "part '{}': its cylindrical frame (axis [{:.4g}, {:.4g}, {:.4g}] through ({:.4g}, {:.4g}, {:.4g})) does not fit the "
         "surface over {:.0f} % of its area: there the circumferential direction about that axis stands more than 30° out "
         "of the surface, or the axis within 30° of the normal, so the fibre directions are not the ones meant. The "
         "surface's normals are most nearly perpendicular to [{:.3g}, {:.3g}, {:.3g}] (a tube's axis): give the vessel's "
         "axis as `axis` and a point on it as `point`",
         part.name, a.x(), a.y(), a.z(), p.x(), p.y(), p.z(), 100 * off / area, round(best.x()), round(best.y()),
-        round(best.z())));
+        round(best.z()))});
   }
   return out;
 }

@@ -11,11 +11,17 @@
 
 namespace tunica {
 
+/// A part whose frame does not fit its surface, and why (the message names the part).
+struct FrameMisfit {
+  int part = -1;
+  std::string message;
+};
+
 /// One message per 3-D part of an anisotropic material with a cylindrical frame whose
 /// circumferential direction a × (x − p) stands more than 30° out of the element's tangent plane,
 /// or whose axis lies within 30° of the element's normal, over more than a fifth of the part's
 /// reference area: the fraction, and the direction to which the part's normals are most nearly
 /// perpendicular (the axis of a tube), as the likely `axis`. Empty when every such frame fits.
-std::vector<std::string> frame_axis_warnings(const Model& m);
+std::vector<FrameMisfit> frame_axis_warnings(const Model& m);
 
 }  // namespace tunica

@@ -273,6 +273,9 @@ struct Model {
   std::map<std::string, std::unique_ptr<SolidMaterial>> solid_materials;  ///< same `materials` section, solid types
   std::vector<Part> parts;
   std::vector<NodeSet> node_sets;
+  /// Node sets a mesh generator makes for other parameters but not for these, by full name
+  /// (`wall.x0`), each with why: for the message of a deck that names one.
+  std::map<std::string, std::string> absent_node_sets;
   std::vector<Boundary> boundaries;
   std::vector<PressureLoad> loads;
   std::vector<RigidSurface> rigid_surfaces;

@@ -4,6 +4,8 @@
 
 #include <numeric>
 
+#include "model/rigid_motion_fix.hpp"
+
 namespace tunica {
 
 namespace {
@@ -13,9 +15,50 @@ int find(std::vector<int>& parent, int i) {
   return i;
 }
 
+const char* kAxis[3] = {"x", "y", "z"};
+
 }  // namespace
 
-std::vector<std::string> unheld_rigid_motions(const Model& m) {
+std::vector<RigidMotion> free_rigid_motions(const Model& m, const std::vector<int>& nodes,
+                                            const std::vector<unsigned>& held) {
+  // A translation along axis k is free when no node holds k; a rotation about an axis parallel
+  // to e_k when every node holding a DOF other than k lies on one such axis (a node on the axis
+  // does not move). A motion held only to first order, like the rotation of a quarter tube about
+  // the line where its symmetry planes' normals meet, is held by the stress it meets at second
+  // order.
+  std::vector<RigidMotion> out;
+  double size = 0;
+  for (int n : nodes) size = std::max(size, (m.X[n] - m.X[nodes.front()]).norm());
+  if (nodes.empty() || !(size > 0)) return out;
+  for (int k = 0; k < 3; ++k) {
+    bool held_k = false;
+    for (int n : nodes) held_k = held_k || (held[n] & (1u << k));
+    if (!held_k) out.push_back({false, k, false, Eigen::Vector3d::Zero()});
+  }
+  for (int k = 0; k < 3; ++k) {
+    const auto off_axis = [&](const Eigen::Vector3d& x) {
+      Eigen::Vector3d y = x;
+      y(k) = 0;
+      return y;
+    };
+    bool free = true, any = false;
+    Eigen::Vector3d through = Eigen::Vector3d::Zero();
+    for (int n : nodes) {
+      if (!(held[n] & ~(1u << k) & 7u)) continue;
+      if (!any) {
+        through = off_axis(m.X[n]);
+        any = true;
+      } else if ((off_axis(m.X[n]) - through).norm() > 1e-9 * size) {
+        free = false;
+        break;
+      }
+    }
+    if (free) out.push_back({true, k, any, through});
+  }
+  return out;
+}
+
+std::vector<UnheldBody> unheld_rigid_motions(const Model& m) {
   const int parts = static_cast<int>(m.parts.size());
   // Bodies: parts joined by a shared node.
   std::vector<int> parent(parts), owner(m.num_nodes(), -1);
@@ -41,79 +84,48 @@ std::vector<std::string> unheld_rigid_motions(const Model& m) {
       for (int d : b.dofs)
         if (d < dpn) held[n] |= 1u << d;
 
-  std::vector<std::string> out;
+  std::vector<UnheldBody> out;
+  // Without any boundary condition the deck may lack the section itself: say where they go.
+  const std::string none =
+      m.boundaries.empty() ? " (the deck has no boundary conditions yet: add them in a `boundary` section)" : "";
   for (int body = 0; body < parts; ++body) {
     if (find(parent, body) != body || in_contact[body]) continue;
-    std::vector<int> nodes;
+    std::vector<int> nodes, members;
     std::string names;
     for (int p = 0; p < parts; ++p)
       if (find(parent, p) == body) {
+        members.push_back(p);
         names += (names.empty() ? "'" : ", '") + m.parts[p].name + "'";
         for (int n : m.parts[p].nodes)
           if (owner[n] == p) nodes.push_back(n);
       }
     if (nodes.empty()) continue;
+    const bool one = names.find(',') == std::string::npos;
     if (m.geometry == Geometry::axisymmetric) {
       bool z = false;
       for (int n : nodes) z = z || (held[n] & 2u);
       if (!z)
-        out.push_back(fmt::format("{} {}: no boundary condition holds z, so {} free to slide along the axis (a "
-                                  "singular tangent): hold z of at least one node, e.g. of `<part>.start`",
-                                  names.find(',') == std::string::npos ? "part" : "parts", names,
-                                  names.find(',') == std::string::npos ? "it is" : "they are"));
+        out.push_back({members, fmt::format("{} {}: no boundary condition holds z, so {} free to slide along the "
+                                            "axis (a singular tangent): hold z of at least one node, e.g. {}{}",
+                                            one ? "part" : "parts", names, one ? "it is" : "they are",
+                                            axial_hold(m, nodes), none)});
       continue;
     }
-    // 3-D: the rigid motions that stay free for finite amplitude (a motion held only to first
-    // order, like the rotation of a quarter tube about the line where its symmetry planes' normals
-    // meet, is held by the stress it meets at second order). A translation along axis k is free
-    // when no node holds k; a rotation about an axis parallel to e_k when every node holding a DOF
-    // other than k lies on one such axis (a node on the axis does not move).
-    double size = 0;
-    for (int n : nodes) size = std::max(size, (m.X[n] - m.X[nodes.front()]).norm());
-    if (!(size > 0)) continue;
-    static const char* axis[3] = {"x", "y", "z"};
+    const std::vector<RigidMotion> free = free_rigid_motions(m, nodes, held);
+    if (free.empty()) continue;
     std::string list;
-    int count = 0;
-    for (int k = 0; k < 3; ++k) {
-      bool held_k = false;
-      for (int n : nodes) held_k = held_k || (held[n] & (1u << k));
-      if (!held_k) {
-        list += fmt::format("{}translation along {}", list.empty() ? "" : ", ", axis[k]);
-        ++count;
-      }
-    }
-    for (int k = 0; k < 3; ++k) {
-      const auto off_axis = [&](const Eigen::Vector3d& x) {
-        Eigen::Vector3d y = x;
-        y(k) = 0;
-        return y;
-      };
-      bool free = true, any = false;
-      Eigen::Vector3d through = Eigen::Vector3d::Zero();
-      for (int n : nodes) {
-        if (!(held[n] & ~(1u << k) & 7u)) continue;
-        if (!any) {
-          through = off_axis(m.X[n]);
-          any = true;
-        } else if ((off_axis(m.X[n]) - through).norm() > 1e-9 * size) {
-          free = false;
-          break;
-        }
-      }
-      if (!free) continue;
+    for (const RigidMotion& r : free)
       list += (list.empty() ? "" : ", ") +
-              (any ? fmt::format("rotation about the line parallel to {} through ({:.4g}, {:.4g}, {:.4g})", axis[k],
-                                 through.x(), through.y(), through.z())
-                   : fmt::format("rotation about {}", axis[k]));
-      ++count;
-    }
-    if (count == 0) continue;
-    out.push_back(fmt::format(
-        "{} {}: the boundary conditions leave {} free to move rigidly ({}), so the tangent is singular and the run "
-        "fails or drifts by an arbitrary rigid motion: hold enough DOFs to stop {}, e.g. for a full tube about z, x "
-        "of `<part>.x0` and y of `<part>.y0` (the nodes on the planes x = 0 and y = 0) besides z at the ends",
-        names.find(',') == std::string::npos ? "part" : "parts", names,
-        names.find(',') == std::string::npos ? "it" : "them", list, count > 1 ? "them" : "it"));
+              (!r.rotation  ? fmt::format("translation along {}", kAxis[r.k])
+               : r.located ? fmt::format("rotation about the line parallel to {} through ({:.4g}, {:.4g}, {:.4g})",
+                                         kAxis[r.k], r.through.x(), r.through.y(), r.through.z())
+                           : fmt::format("rotation about {}", kAxis[r.k]));
+    const std::string fix = rigid_motion_fix(m, nodes, held);
+    out.push_back({members, fmt::format("{} {}: the boundary conditions leave {} free to move rigidly ({}), so the "
+                                        "tangent is singular and the run fails or drifts by an arbitrary rigid motion: "
+                                        "hold enough DOFs to stop {}{}{}",
+                                        one ? "part" : "parts", names, one ? "it" : "them", list,
+                                        free.size() > 1 ? "them" : "it", fix.empty() ? "" : ", e.g. " + fix, none)});
   }
   return out;
 }

@@ -146,6 +146,37 @@ TEST(BadInput, UndefinedNodeSet) {
                "undefined node set 'wall.begin' (the node sets are: wall.start, wall.end, wall.all)");
 }
 
+TEST(BadInput, AnEmptyDofListIsAnErrorAtItsLine) {
+  // `dofs: []` would hold nothing, and a step setting the boundary would do nothing.
+  expect_error("empty-dofs", "stretch: {node_set: wall.end, dofs: [z]}", "stretch: {node_set: wall.end, dofs: []}",
+               "boundary.stretch.dofs",
+               "the list of DOFs is empty, so the boundary would hold nothing: name the DOFs it holds (axisymmetric "
+               "DOFs are r and z, and slope_r and slope_z on shells), e.g. `dofs: [z]`");
+}
+
+TEST(BadInput, ADofListedTwiceIsAnErrorAtItsItem) {
+  // `[z, z]` was read as `[z]`; most likely another DOF was meant.
+  expect_error("dof-twice", "stretch: {node_set: wall.end, dofs: [z]}", "stretch: {node_set: wall.end, dofs: [z, z]}",
+               "boundary.stretch.dofs[1]",
+               "DOF 'z' is listed twice: list each DOF once (axisymmetric DOFs are r and z, and slope_r and slope_z on "
+               "shells)");
+}
+
+TEST(BadInput, ATubeWithoutX0SaysWhyAndProposesNoOtherSet) {
+  // The 3-D quarter tube with its sector written 1.5708 (rad, not exactly π/2): its last column
+  // is its x0 by construction, so the deck is valid. With 85 deg there is no column at 90°:
+  // the error says why, and does not propose `wall.y0` (another set, not a typo).
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  const Outcome ok = run_cli("check " + write_deck("sector-1.5708", replace(quarter, "sector: 90 deg", "sector: 1.5708")));
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  const Outcome o = expect_check_error(
+      kScratch, "sector-85", replace(quarter, "sector: 90 deg", "sector: 85 deg"), "sym_x:", "boundary.sym_x.node_set",
+      "undefined node set 'wall.x0': its part's mesh has none, since `x0` holds the nodes at θ = 90° and 270°, on the "
+      "plane x = 0, and this tube's sector, 85 deg, ends before 90° (a quarter tube is `sector: 90 deg`) (the node "
+      "sets are: ");
+  EXPECT_EQ(o.output.find("did you mean"), std::string::npos) << o.output;
+}
+
 TEST(BadInput, UndefinedLoadInHistory) {
   expect_error("undefined-load", "load: lumen", "load: lumen2", "output.history[0].load", "undefined load 'lumen2'");
 }
@@ -194,6 +225,38 @@ TEST(BadInput, RunWithABadDeckWritesNothingAndKeepsEarlierResults) {
   const Outcome o = run_cli("run " + path + " -o " + out.string());
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_EQ(read_text((out / "history.csv").string()), "earlier results\n");
+}
+
+TEST(BadInput, AHistoryColumnNameThatWouldCorruptTheCsvIsRefused) {
+  // A comma in `name` split the column in history.csv's header (one name, two columns), so every
+  // reader misaligned the rows; a double quote or a line break breaks the row. Refused at the
+  // name with the characters allowed and the name with them replaced.
+  const std::string from = "name: lambda_theta}";
+  expect_error("name-comma", from, "name: \"lambda,theta\"}", "output.history[1].name",
+               "'lambda,theta' holds a comma, which would corrupt the header of history.csv (a comma splits the "
+               "column; a quote or a line break breaks the row): a column name may hold any printable character but "
+               "a comma and a double quote, e.g. `lambda_theta`");
+  expect_error("name-quote", from, "name: 'lambda\"theta'}", "output.history[1].name", "'lambda\"theta' holds a double quote");
+  expect_error("name-newline", from, "name: \"lambda\\ntheta\"}", "output.history[1].name",
+               "'lambda\\ntheta' holds a line break");
+  expect_error("name-empty", from, "name: \"\"}", "output.history[1].name", "the column name is empty");
+  // Any other printable text is a column of its own: spaces, quotes of another kind, UTF-8. The
+  // header and every row of history.csv have as many fields as columns.
+  const std::string deck = write_deck("name-printable", replace(read_text(kExample), from, "name: \"λ_θ (it's; 1/2)\"}"));
+  const fs::path out = fs::temp_directory_path() / "tunica-bad-input" / "name-printable";
+  const Outcome o = run_cli("run " + deck + " -q -o " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  std::ifstream csv(out / "history.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  EXPECT_NE(header.find(",λ_θ (it's; 1/2),"), std::string::npos) << header;
+  const auto fields = [](const std::string& line) { return std::count(line.begin(), line.end(), ',') + 1; };
+  int rows = 0;
+  while (std::getline(csv, row)) {
+    EXPECT_EQ(fields(row), fields(header)) << row;
+    ++rows;
+  }
+  EXPECT_GT(rows, 1);
 }
 
 TEST(BadInput, DeckThatIsNotAMap) {
@@ -281,6 +344,28 @@ TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
       << o.output;
 }
 
+TEST(BadInput, ABareArcAngleThatBreaksTheMeridianIsNamedWithDegrees) {
+  // `end_angle: 90` is 90 rad: the arc turned 14 times and ended in "node 2 has a negative
+  // radius" at the mesh, naming no key. The error stands at the angle, says how it was read and
+  // proposes degrees; without a bare angle the mesh is blamed as before, without the radians hint.
+  const std::string sphere = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  const std::string arc = "start_angle: 0 deg, end_angle: 90 deg";
+  Outcome o = expect_check_error(kScratch, "arc-90", replace(sphere, arc, "start_angle: 0 deg, end_angle: 90"),
+                                 "end_angle: 90,", "parts.balloon.mesh.end_angle",
+                                 "90 has no unit and is read in radians (90 rad = 5157 deg), which makes the arc span "
+                                 "5156.62 deg, more than a full turn: a plain number is radians; for degrees write `90 deg`");
+  // Within a turn, 3 rad (172°) reaches r < 0; both bare, the first is blamed and the other named.
+  o = expect_check_error(kScratch, "arc-3", replace(sphere, arc, "start_angle: -1, end_angle: 3"), "start_angle: -1",
+                         "parts.balloon.mesh.start_angle",
+                         "-1 has no unit and is read in radians (-1 rad = -57.3 deg), which puts node 65 at a negative "
+                         "radius r = -0.0291995 mm: a plain number is radians; for degrees write `-1 deg` (and `3 deg` "
+                         "for `end_angle`, also without a unit)");
+  expect_check_error(kScratch, "arc-deg", replace(sphere, arc, "start_angle: 0 deg, end_angle: 120 deg"), "mesh: {type: arc",
+                     "parts.balloon.mesh",
+                     "the meridian has node 76 at a negative radius r = -0.0209424 mm: an axisymmetric meridian stays "
+                     "at r ≥ 0 (check `center`, `radius` and the angles, or `from` and `to`)");
+}
+
 TEST(BadInput, NoExampleDeckWarns) {
   // The examples write a unit on every pressure and angle; none of them is warned about.
   for (const auto& entry : fs::directory_iterator(std::string(TUNICA_SOURCE_DIR) + "/examples")) {
@@ -314,7 +399,12 @@ TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
                           "move rigidly (translation along x, translation along y, rotation about z)"),
             std::string::npos)
       << o.output;
-  EXPECT_NE(o.output.find("x of `<part>.x0` and y of `<part>.y0`"), std::string::npos) << o.output;
+  // What to hold comes from the part's own node sets: its symmetry planes, by their names.
+  EXPECT_NE(o.output.find("hold enough DOFs to stop them, e.g. x of `wall.x0` (on x = 0) and y of `wall.y0` (on y = 0): "
+                          "held so, the body can still inflate freely"),
+            std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("<part>"), std::string::npos) << o.output;
   const std::string full = write_deck(
       "rigid-full", replace(replace(replace(read_text(quarter), "sector: 90 deg, ", ""),
                                     "  sym_x:   {node_set: wall.x0, dofs: [x]}      # symmetry plane x = 0\n", ""),
@@ -324,14 +414,60 @@ TEST(BadInput, ARigidMotionNoBoundaryConditionHoldsIsWarnedAbout) {
   EXPECT_NE(o.output.find("free to move rigidly (translation along y), so"),
             std::string::npos)
       << o.output;
+  EXPECT_NE(o.output.find("e.g. y of `wall.y0` (on y = 0)"), std::string::npos) << o.output;
   const std::string axisym = write_deck(
       "rigid-axisym", replace(replace(read_text(kExample), "  base:    {node_set: wall.start, dofs: [z]}   # axial position held at z = 0\n", ""),
                               "  stretch: {node_set: wall.end, dofs: [z]}     # axial displacement of the other end\n",
                               "  stretch: {node_set: wall.end, dofs: [r]}\n"));
   o = run_cli("check " + axisym);
-  EXPECT_NE(o.output.find("part 'wall': no boundary condition holds z, so it is free to slide along the axis"),
+  EXPECT_NE(o.output.find("part 'wall': no boundary condition holds z, so it is free to slide along the axis (a "
+                          "singular tangent): hold z of at least one node, e.g. of `wall.start`"),
             std::string::npos)
       << o.output;
+}
+
+TEST(BadInput, ABodyFreeToMoveWithoutABoundarySectionIsSaidAtItsFirstStep) {
+  // The axisymmetric example without its `boundary` (and the prestretch that sets one): nothing
+  // holds z. Said at the first step, where the tangent is singular, not at the deck's 1:1.
+  std::string text = read_text(kExample);
+  text = text.substr(0, text.find("boundary:\n")) + text.substr(text.find("loads:\n"));
+  text = replace(text, "  - name: prestretch\n    increments: 6\n    set: {stretch: 0.6 mm}", "");
+  text = replace(text, "    - {quantity: reaction_z, node_set: wall.end, name: axial_force, unit: N}\n", "");
+  const std::string deck = write_deck("no-boundary", text);
+  const Outcome o = run_cli("check " + deck);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("no-boundary.yaml:" + std::to_string(line_of(text, "  - name: inflation")) +
+                          ":5: key 'steps[0]': part 'wall': no boundary condition holds z, so it is free to slide along "
+                          "the axis (a singular tangent): hold z of at least one node, e.g. of `wall.start` (the deck "
+                          "has no boundary conditions yet: add them in a `boundary` section)"),
+            std::string::npos)
+      << o.output;
+}
+
+TEST(BadInput, TheRigidMotionFixComesFromThePartsOwnSets) {
+  // A sphere has no `x0` or `y0`: held at its south pole only, it may turn about three lines. Its
+  // north pole held in x and y stops the turns about x and y (both poles stay on the z axis as it
+  // inflates), and nothing but a node off the axis stops the turn about z: named by its index in
+  // the part, with the node set that names it. The proposal was "x0/y0 of `<part>`".
+  const std::string sphere =
+      "units: {length: mm, force: N}\nmaterials:\n  latex: {type: neo_hookean, mu: 0.2 MPa}\n"
+      "parts:\n  balloon: {element: membrane, material: latex, thickness: 0.1 mm, mesh: {type: sphere, radius: 5 mm, n: 6}}\n"
+      "boundary:\n  south: {node_set: balloon.south, dofs: [x, y, z]}\n"
+      "loads:\n  p: {type: pressure, part: balloon}\nsteps:\n  - {name: inflate, increments: 1, set: {p: 5 kPa}}\n";
+  const Outcome o = run_cli("check " + write_deck("rigid-sphere", sphere));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("hold enough DOFs to stop them, e.g. x and y of `balloon.north` (on x = 0 and y = 0) and y of "
+                          "node 24 of part 'balloon', at (5, 0, 0) (as a node set: `{part: balloon, nodes: [24]}`): held "
+                          "so, the body can still inflate freely"),
+            std::string::npos)
+      << o.output;
+  // Held as proposed, it is held.
+  const std::string held = replace(sphere, "boundary:\n",
+                                   "node_sets:\n  turn: {part: balloon, nodes: [24]}\nboundary:\n"
+                                   "  north: {node_set: balloon.north, dofs: [x, y]}\n  turn: {node_set: turn, dofs: [y]}\n");
+  const Outcome h = run_cli("check " + write_deck("rigid-sphere-held", held));
+  EXPECT_EQ(h.exit_code, 0) << h.output;
+  EXPECT_EQ(h.output.find("warning"), std::string::npos) << h.output;
 }
 
 TEST(BadInput, ACylindricalFrameThatDoesNotFitItsSurfaceIsWarnedAbout) {
@@ -344,7 +480,9 @@ TEST(BadInput, ACylindricalFrameThatDoesNotFitItsSurfaceIsWarnedAbout) {
       write_deck("frame-axis", replace(read_text(quarter), frame, "frame: {type: cylindrical, axis: [1, 0, 0]}"));
   Outcome o = run_cli("check " + along_x);
   EXPECT_EQ(o.exit_code, 0) << o.output;
-  EXPECT_NE(o.output.find("frame-axis.yaml:15:3: key 'parts': part 'wall': its cylindrical frame (axis [1, 0, 0] "
+  // At the part's own `frame` (it stood at `parts`).
+  EXPECT_NE(o.output.find("frame-axis.yaml:" + std::to_string(line_of(read_text(along_x), "    frame: {")) +
+                          ":12: key 'parts.wall.frame': part 'wall': its cylindrical frame (axis [1, 0, 0] "
                           "through (0, 0, 0)) does not fit the surface over"),
             std::string::npos)
       << o.output;

@@ -167,6 +167,36 @@ TEST(MessageClasses, UndefinedNodeSetListsTheSetsAndTheNearest) {
                       "did you mean 'wall.start'?");
 }
 
+TEST(MessageClasses, GeneratedSetTheMeshLacksSaysWhy) {
+  // The 3-D quarter tube with a sector short of 90°: no `x0`, why, and no other set proposed.
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  const Outcome o = expect_check_error(kScratch, "no-x0", replace(quarter, "sector: 90 deg", "sector: 85 deg"), "sym_x:",
+                                       "boundary.sym_x.node_set",
+                                       "undefined node set 'wall.x0': its part's mesh has none, since `x0` holds the "
+                                       "nodes at θ = 90° and 270°");
+  EXPECT_NE(o.output.find("(a quarter tube is `sector: 90 deg`)"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("did you mean"), std::string::npos) << o.output;
+}
+
+TEST(MessageClasses, EmptyDofListNamesTheDofs) {
+  expect_deck_message("empty-dofs", "stretch: {node_set: wall.end, dofs: [z]}", "stretch: {node_set: wall.end, dofs: []}",
+                      "stretch: {node_set", "boundary.stretch.dofs", "the list of DOFs is empty", "e.g. `dofs: [z]`");
+}
+
+TEST(MessageClasses, ColumnNameThatWouldCorruptTheCsvGivesOneThatWouldNot) {
+  expect_deck_message("column-comma", "name: lambda_theta}", "name: \"lambda,theta\"}", "lambda,theta",
+                      "output.history[1].name", "'lambda,theta' holds a comma", "e.g. `lambda_theta`");
+}
+
+TEST(MessageClasses, VolumeAxisThatDoesNotFitTheOpenEndsGivesTheTubesAxis) {
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  const Outcome o = expect_check_error(
+      kScratch, "volume-axis",
+      replace(quarter, "lumen: {type: pressure, part: wall}", "lumen: {type: pressure, part: wall, volume_axis: [1, 0, 0]}"),
+      "volume_axis: [1, 0, 0]", "loads.lumen.volume_axis", "the axis [1, 0, 0] through p₀ = (0, 0, 0) does not fit the open edge loop of 10 edge(s)");
+  EXPECT_NE(o.output.find("which fits: `volume_axis: [0, 0, 1]`"), std::string::npos) << o.output;
+}
+
 TEST(MessageClasses, UndefinedPartListsTheParts) {
   expect_deck_message("undefined-part", "part: wall}", "part: wal}", "part: wal}", "loads.lumen.part",
                       "undefined part 'wal' (the parts are: wall", "did you mean 'wall'?");

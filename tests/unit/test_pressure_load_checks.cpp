@@ -3,6 +3,7 @@
 // and an open surface whose reported volume misses the caps that would close it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../support/capture.hpp"
@@ -59,12 +60,38 @@ TEST(PressureLoadChecks, SymmetryPlanesAndAVolumeAxisCloseTheSurface) {
   EXPECT_TRUE(warnings_of(read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml")).empty());
 }
 
-TEST(PressureLoadChecks, NormalsIntoTheEnclosedVolumeNameFlip) {
-  const auto w = warnings_of(quarter_tube("lumen: {type: pressure, part: wall, flip: true, volume_axis: [0, 0, 1]}"));
+TEST(PressureLoadChecks, AnInwardPressureNamesTheFixForItsFlip) {
+  // The generated quarter tube's normals point outward: with `flip: true` the pressure pushes
+  // inward, and the fix is to remove the flip, not to set it.
+  auto w = warnings_of(quarter_tube("lumen: {type: pressure, part: wall, flip: true, volume_axis: [0, 0, 1]}"));
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("pushes its surface (part 'wall') inward"), std::string::npos) << w[0];
-  EXPECT_NE(w[0].find("`flip: true`"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("because the load has `flip: true`. A pressure inside a vessel or balloon pushes outward: "
+                      "remove `flip: true` from the load (or set `flip: false`)"),
+            std::string::npos)
+      << w[0];
+  EXPECT_EQ(w[0].find("set `flip: true`"), std::string::npos) << w[0];
   EXPECT_TRUE(warnings_of(quarter_tube("lumen: {type: pressure, part: wall, volume_axis: [0, 0, 1]}")).empty());
+  // Normals that point inward (the quarter tube with its elements' node order reversed): set the flip.
+  Model m = read_deck_text(quarter_tube("lumen: {type: pressure, part: wall, volume_axis: [0, 0, 1]}"), "in.yaml");
+  for (ElementBlock& b : m.parts[0].blocks)
+    for (int e = 0; e < b.size(); ++e) std::reverse(b.nodes.begin() + 4 * e, b.nodes.begin() + 4 * e + 4);
+  w = pressure_load_warnings(System(m));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("so the normals point into the volume the surface encloses. A pressure inside a vessel or "
+                      "balloon pushes outward: set `flip: true` on the load (or reverse the elements' node order in "
+                      "the mesh)"),
+            std::string::npos)
+      << w[0];
+  // An axisymmetric tube meshed downwards: the meridian is run the other way.
+  std::string down = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml");
+  down = replace(down, "from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm]", "from: [0.763 mm, 1 mm], to: [0.763 mm, 0 mm]");
+  w = warnings_of(down);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("set `flip: true` on the load (or run the meridian the other way: swap the mesh's `from` and "
+                      "`to`, or `start_angle` and `end_angle`)"),
+            std::string::npos)
+      << w[0];
 }
 
 TEST(PressureLoadChecks, TunicaCheckPrintsTheWarningAndStillAcceptsTheDeck) {

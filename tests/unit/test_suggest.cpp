@@ -23,3 +23,19 @@ TEST(Suggest, AFileNameIsOfferedOnlyWhenReallyClose) {
   EXPECT_EQ(nearest_file_name("wall.geo", {"wall.msh", "wal.geo"}), "wal.geo");
   EXPECT_EQ(nearest_file_name("wall.msh", {}), "");
 }
+
+TEST(Suggest, TheSetsOfAPartAreOfferedOnlyForATypoOfTheSetsName) {
+  // `wall.x0` and `wall.y0` share the part's prefix and differ in the set's own name, `x0`:
+  // another set, not a typo (a tube without `x0` proposed `y0`); compared by the part's rest as
+  // file names by their stems.
+  const std::vector<std::string> sets = {"wall.bottom", "wall.top", "wall.y0", "wall.start", "wall.ring2", "wall.all"};
+  EXPECT_EQ(nearest_name("wall.x0", sets), "");
+  EXPECT_EQ(nearest_name("wall.ring1", sets), "");      // another number is another set
+  EXPECT_EQ(nearest_name("wall.strat", sets), "wall.start");  // letters swapped
+  EXPECT_EQ(nearest_name("wall.botom", sets), "wall.bottom");
+  EXPECT_EQ(nearest_name("wall.Y0", sets), "wall.y0");        // letter case
+  EXPECT_EQ(nearest_name("wal.top", sets), "wall.top");       // a typo in the part's name
+  // Names without a dot keep their rule.
+  EXPECT_EQ(nearest_name("lumne", {"lumen"}), "lumen");
+  EXPECT_EQ(nearest_name("mn", {"mm", "cm"}), "mm");
+}

@@ -161,6 +161,44 @@ TEST(SurfaceGenerators, TubeNodeSetsAreExactAndComplete) {
   }
 }
 
+TEST(SurfaceGenerators, TubeSymmetrySetsAreTakenByColumnNotByCoordinate) {
+  // `sector: 1.5708` (4·10⁻⁶ rad past 90°) and 90.001 deg: the last column stands 10⁻⁵ R off
+  // the plane x = 0, but it is the tube's column at 90° by construction, so it is `x0` (the
+  // coordinate test to 10⁻¹² R left the set out, and the deck then proposed `y0`).
+  const double R = 3.0, L = 6.0;
+  for (double sector : {1.5708, 1.5707963, 90.001 * kPi / 180}) {
+    const SurfaceMesh q = tube_mesh(R, L, sector, 8, 4, false);
+    ASSERT_EQ(q.node_sets.count("x0"), 1u) << sector;
+    EXPECT_EQ(q.node_sets.at("x0"), q.node_sets.at("end")) << sector;
+    EXPECT_EQ(q.node_sets.at("y0"), q.node_sets.at("start")) << sector;
+    EXPECT_TRUE(q.absent_sets.empty()) << sector;
+  }
+  // A sector that ends short of 90° has none, and says why; so do a sector whose columns miss
+  // 90° and a closed tube whose `around` is not a multiple of 4.
+  const SurfaceMesh s85 = tube_mesh(R, L, 85 * kPi / 180, 8, 4, false);
+  EXPECT_EQ(s85.node_sets.count("x0"), 0u);
+  EXPECT_EQ(s85.absent_sets.at("x0"),
+            "`x0` holds the nodes at θ = 90° and 270°, on the plane x = 0, and this tube's sector, 85 deg, ends before "
+            "90° (a quarter tube is `sector: 90 deg`)");
+  const SurfaceMesh s110 = tube_mesh(R, L, 110 * kPi / 180, 8, 4, false);
+  EXPECT_NE(s110.absent_sets.at("x0").find("90 deg × around / sector is a whole number (here 6.54545: sector 110 "
+                                           "deg, around 8)"),
+            std::string::npos)
+      << s110.absent_sets.at("x0");
+  EXPECT_EQ(tube_mesh(R, L, 120 * kPi / 180, 8, 4, false).node_sets.at("x0").size(), 5u);  // column 6 at 90°
+  EXPECT_NE(tube_mesh(R, L, 2 * kPi, 10, 4, false).absent_sets.at("x0").find("`around` is a multiple of 4 (it is 10)"),
+            std::string::npos);
+  // The staggered tube: x0 on the even rings for around = 4k, on the odd ones for 4k + 2.
+  for (int around : {8, 6}) {
+    const SurfaceMesh st = staggered_tube_mesh(R, L, around, 4);
+    EXPECT_EQ(st.node_sets.at("x0"), nodes_on_plane(st, 0, 0.0, R)) << around;
+    EXPECT_EQ(st.node_sets.at("y0"), nodes_on_plane(st, 1, 0.0, R)) << around;
+  }
+  EXPECT_NE(staggered_tube_mesh(R, L, 7, 4).absent_sets.at("x0").find("only when `around` is even (it is 7)"),
+            std::string::npos);
+  EXPECT_NE(sphere_mesh(R, 3, false).absent_sets.at("equator").find("even n only"), std::string::npos);
+}
+
 TEST(SurfaceGenerators, TubeAreaConvergesAtSecondOrder) {
   const double R = 1.5, L = 2.0;
   for (bool tri : {false, true}) {
