@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "../support/capture.hpp"
+#include "../support/scratch.hpp"
 #include "../support/shell_decks.hpp"
 
 using namespace tunica::test;
@@ -21,12 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("tunica-restart-" + std::to_string(getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 /// A long run of the balloon example: 300 increments (20 elements, small ParaView frames).
 std::string long_deck(const fs::path& dir) {
@@ -101,7 +96,7 @@ std::vector<std::string> rows_without_timing(const std::string& csv) {
 }  // namespace
 
 TEST(Restart, KilledRunLeavesCompleteFilesAndTheRestartReproducesTheUninterruptedRun) {
-  const fs::path dir = scratch("kill");
+  const fs::path dir = scratch("restart", "kill");
   const std::string deck = long_deck(dir);
   ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
 
@@ -122,7 +117,7 @@ TEST(Restart, KilledRunLeavesCompleteFilesAndTheRestartReproducesTheUninterrupte
 }
 
 TEST(Restart, SigtermStopsAfterTheCurrentIncrementAndTheRunCanContinue) {
-  const fs::path dir = scratch("term");
+  const fs::path dir = scratch("restart", "term");
   const std::string deck = long_deck(dir);
   const int status = start_and_signal(deck, dir / "out", 20, SIGTERM);
   ASSERT_TRUE(WIFEXITED(status));
@@ -134,7 +129,7 @@ TEST(Restart, SigtermStopsAfterTheCurrentIncrementAndTheRunCanContinue) {
 }
 
 TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
-  const fs::path dir = scratch("refuse");
+  const fs::path dir = scratch("restart", "refuse");
   const std::string example = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
   ASSERT_EQ(run("run " + example + " -q -o " + (dir / "done").string()), 0);
   EXPECT_EQ(run("run " + example + " --restart " + (dir / "done").string()), 2);
@@ -148,7 +143,7 @@ TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
 // Kirchhoff–Love shells, the part that enters in step 2 and the contact between shells, and
 // the continued run reproduces the uninterrupted one bit for bit in history.csv.
 TEST(Restart, AKilledShellRunRestartsToTheUninterruptedResults) {
-  const fs::path dir = scratch("shell");
+  const fs::path dir = scratch("restart", "shell");
   const std::string deck = (dir / "shell.yaml").string();
   std::ofstream(deck) << replace(kShellArteryBalloon, "{name: inflate, increments: 8,", "{name: inflate, increments: 400,");
   ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
@@ -168,7 +163,7 @@ TEST(Restart, AKilledShellRunRestartsToTheUninterruptedResults) {
 
 TEST(Restart, CheckpointsFollowTheIntervalAndAStopCommitsTheLastIncrement) {
   // checkpoint_every_s: 1000 — within the run's first step only its reference state is checkpointed.
-  const fs::path dir = scratch("interval");
+  const fs::path dir = scratch("restart", "interval");
   std::string text = read_text(long_deck(dir));
   const std::string deck = (dir / "sparse.yaml").string();
   std::ofstream(deck) << replace(text, "output:\n", "output:\n  checkpoint_every_s: 1000\n");
@@ -195,7 +190,7 @@ TEST(Restart, ARunThatStopsOnAFailedIncrementHasAFrameOfItsLastConvergedState) {
   // The balloon pressed past its pressure maximum (about 0.0124 MPa) under pressure control:
   // the run stops with exit 3. With vtk_every: 100 no increment of the step would have a
   // frame; the last converged state gets one, recorded in the checkpoint.
-  const fs::path dir = scratch("limit");
+  const fs::path dir = scratch("restart", "limit");
   std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
   text = replace(replace(replace(text, "increments: 20", "increments: 10"), "elements: 100}", "elements: 20}"),
                  "inflation: 0.0118 MPa", "inflation: 0.015 MPa");
