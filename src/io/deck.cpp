@@ -15,6 +15,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "core/article.hpp"
 #include "core/bounded_file.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
@@ -567,7 +568,7 @@ void read_output(const DeckNode& deck, Model& m) {
                              : "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
     for (const char* key : {"part", "node_set", "load", "contact"}) {
       if (h.has(key) && target != key)
-        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, target.empty() ? "no set" : "a " + target));
+        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, target.empty() ? "no set" : with_article(target)));
     }
     if (!target.empty() && !h.has(target))
       h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, target));

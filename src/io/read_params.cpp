@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/article.hpp"
 #include "core/suggest.hpp"
 
 namespace tunica {
@@ -67,7 +68,7 @@ std::string value_placeholder(const ParamSpec& p, const UnitSystem& units) {
   switch (p.type) {
     case ParamType::number:
       return p.dim == Dimension::dimensionless ? "<a number>"
-                                               : fmt::format("<a {} in {}>", dimension_name(p.dim),
+                                               : fmt::format("<{} in {}>", with_article(dimension_name(p.dim)),
                                                              p.dim == Dimension::angle ? "deg" : units.internal_unit(p.dim));
     case ParamType::integer: return "<an integer>";
     case ParamType::boolean: return "<true or false>";
@@ -90,24 +91,23 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
   double value = 0;
   std::string unit;
   if (!split_quantity(s, value, unit)) {
-    node.fail(dim == Dimension::dimensionless
-                  ? "expected a number, got '" + s + "'"
-                  : "expected a number with an optional unit (a " + std::string(dimension_name(dim)) +
-                        ", e.g. '" + (dim == Dimension::length     ? "0.122 mm"
-                                      : dim == Dimension::pressure ? "61.163 kPa"
-                                      : dim == Dimension::force    ? "0.1 N"
-                                      : dim == Dimension::penalty  ? "1e4 N/mm^3"
-                                      : dim == Dimension::moment   ? "0.5 N*mm"
-                                                                   : "90 deg") +
-                        "'), got '" + s + "'");
+    if (dim == Dimension::dimensionless) node.fail("expected a number, got '" + s + "'");
+    const char* example = dim == Dimension::length     ? "0.122 mm"
+                          : dim == Dimension::pressure ? "61.163 kPa"
+                          : dim == Dimension::force    ? "0.1 N"
+                          : dim == Dimension::penalty  ? "1e4 N/mm^3"
+                          : dim == Dimension::moment   ? "0.5 N*mm"
+                                                       : "90 deg";
+    node.fail(fmt::format("expected a number with an optional unit ({}, e.g. '{}'), got '{}'",
+                          with_article(dimension_name(dim)), example, s));
   }
   try {
     const double v = units.to_internal(value, unit, dim);
     if (!std::isfinite(v)) node.fail("value '" + s + "' is not finite");
     return v;
   } catch (const std::invalid_argument& e) {
-    node.fail(std::string(e.what()) + " (in '" + s + "'; expected a " + dimension_name(dim) + unit_fix(s, unit, dim, units) +
-              ")");
+    node.fail(fmt::format("{} (in '{}'; expected {}{})", e.what(), s, with_article(dimension_name(dim)),
+                          unit_fix(s, unit, dim, units)));
   }
 }
 

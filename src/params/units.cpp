@@ -2,6 +2,8 @@
 
 #include <udunits2.h>
 
+#include "core/article.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -64,7 +66,7 @@ double convert(double value, const std::string& from, const std::string& to, con
   }
   UnitPtr a = parse_unit(from), b = parse_unit(to);
   cv_converter* cv = ut_get_converter(a.get(), b.get());
-  if (!cv) throw std::invalid_argument("unit '" + from + "' is not a " + what);
+  if (!cv) throw std::invalid_argument("unit '" + from + "' is not " + with_article(what));
   const double r = cv_convert_double(cv, value);
   {
     std::lock_guard<std::mutex> lock(m);

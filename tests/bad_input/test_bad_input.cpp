@@ -83,6 +83,14 @@ TEST(BadInput, MissingSection) {
   EXPECT_NE(o.output.find("key 'steps': missing required key 'steps'"), std::string::npos) << o.output;
 }
 
+TEST(BadInput, AnAngleInAUnitOfAnotherDimensionSaysAnAngle) {
+  const std::string hgo = "type: hgo, mu: 30 kPa, k1: 100 kPa, k2: 5, beta: 40 mm, kappa: 0.1}";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("  aorta:")) + "  aorta: {" + hgo + "\n" + text.substr(text.find("\nparts:"));
+  expect_check_error(kScratch, "angle-in-mm", deck, "beta: 40 mm", "materials.aorta.beta",
+                     "unit 'mm' is not an angle (in '40 mm'; expected an angle, e.g. `40 deg`)");
+}
+
 TEST(BadInput, WrongTypeNumber) {
   expect_error("wrong-type", "a2: 0.60558", "a2: stiff", "materials.aorta.a2", "expected a number, got 'stiff'");
 }
