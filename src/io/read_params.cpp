@@ -10,6 +10,7 @@
 
 #include "core/article.hpp"
 #include "core/suggest.hpp"
+#include "io/unit_advice.hpp"
 
 namespace tunica {
 
@@ -33,34 +34,6 @@ std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x
     if (fits) s += fmt::format(": a plain number is radians; for degrees write `{} deg`", written);
   }
   return s;
-}
-
-/// Common units of a dimension, for the nearest to a mistyped one.
-std::vector<std::string> common_units(Dimension dim) {
-  switch (dim) {
-    case Dimension::length: return {"m", "cm", "mm", "um", "nm", "in"};
-    case Dimension::force: return {"N", "mN", "kN", "uN", "dyn", "lbf"};
-    case Dimension::pressure: return {"Pa", "kPa", "MPa", "GPa", "mmHg", "bar", "psi", "atm", "N/mm^2", "N/m^2"};
-    case Dimension::angle: return {"deg", "rad", "degree"};
-    case Dimension::volume: return {"mm^3", "cm^3", "m^3", "ml", "ul"};
-    case Dimension::penalty: return {"N/mm^3", "N/m^3"};
-    case Dimension::moment: return {"N*mm", "N*m"};
-    default: return {};
-  }
-}
-
-/// ", e.g. `0.122 mm`" (the number as written with a unit of `dim`; for a mistyped unit the
-/// nearest common one, else the deck's), or "" for a dimensionless value.
-std::string unit_fix(const std::string& written, const std::string& unit, Dimension dim, const UnitSystem& units) {
-  if (dim == Dimension::dimensionless) return "";
-  const std::size_t at = unit.empty() ? std::string::npos : written.rfind(unit);
-  const std::string number = at == std::string::npos ? written : written.substr(0, at);
-  std::string fix = nearest_name(unit, common_units(dim));
-  if (fix.empty()) fix = dim == Dimension::angle ? "deg" : dim == Dimension::pressure ? "kPa" : units.internal_unit(dim);
-  std::string n = number;
-  while (!n.empty() && (n.back() == ' ' || n.back() == '\t')) n.pop_back();
-  while (!n.empty() && (n.front() == ' ' || n.front() == '\t')) n.erase(0, 1);
-  return ", e.g. `" + n + " " + fix + "`";
 }
 
 /// What a missing key's value looks like: "<a length, e.g. 1 mm>", "<one of: a, b>", ...
@@ -106,8 +79,7 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
     if (!std::isfinite(v)) node.fail("value '" + s + "' is not finite");
     return v;
   } catch (const std::invalid_argument& e) {
-    node.fail(fmt::format("{} (in '{}'; expected {}{})", e.what(), s, with_article(dimension_name(dim)),
-                          unit_fix(s, unit, dim, units)));
+    node.fail(unit_advice(s, unit, dim, units, e.what()));
   }
 }
 

@@ -147,6 +147,15 @@ double UnitSystem::from_internal(double value, const std::string& unit, Dimensio
   return convert(value, internal_unit(d), unit, dimension_name(d));
 }
 
+bool is_unit(const std::string& text) {
+  try {
+    parse_unit(text);
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
 std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string& unit) {
   if (d == Dimension::dimensionless) return "";
   std::string u = unit;

@@ -119,6 +119,28 @@ TEST(MessageClasses, MistypedUnitGetsTheNearestUnit) {
                       "unknown unit 'kPaa'", "e.g. `61.163 kPa`");
 }
 
+TEST(MessageClasses, AWordAfterTheUnitIsNamedAndTheUnitBeforeItProposed) {
+  // UDUNITS-2 reads "kPa abs" as kPa × abs: the word it does not know is named, and the fix is
+  // the unit before it, not the nearest unit to "kPa abs" by spelling.
+  const Outcome o = expect_deck_message("unit-word", "c: 61.163 kPa", "c: 61.163 kPa abs", "c: 61.163 kPa abs",
+                                        "materials.aorta.c", "unit 'kPa abs' is not understood (in '61.163 kPa abs'): "
+                                        "'abs' is not a unit",
+                                        "'kPa' alone is a pressure (stress): write `61.163 kPa`");
+  EXPECT_EQ(o.output.find("e.g."), std::string::npos) << o.output;
+}
+
+TEST(MessageClasses, GradIsRefusedWithDegreesAndGradiansAsTheFix) {
+  // "grad" is the degree in German and the gradian in French; UDUNITS-2 knows neither by that
+  // name, and the nearest unit by spelling, rad, is neither.
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 40 grad\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  const Outcome o = expect_check_error(kScratch, "grad", deck, "beta: 40 grad", "materials.aorta.beta",
+                                       "unknown unit 'grad' (in '40 grad'; expected an angle)");
+  EXPECT_SAYS(o, "for degrees write `40 deg`, for gradians (400 to a turn) `40 grade`");
+  EXPECT_EQ(o.output.find("40 rad"), std::string::npos) << o.output;
+}
+
 TEST(MessageClasses, OutOfRangeIsEchoedInTheUnitTyped) {
   expect_deck_message("out-of-range", "thickness: 0.122 mm", "thickness: -122 um", "thickness: -122 um",
                       "parts.wall.thickness", "value -122 um (= -0.122 mm) is out of range", "(must be > 0 mm)");
