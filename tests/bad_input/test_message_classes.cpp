@@ -141,6 +141,18 @@ TEST(MessageClasses, GradIsRefusedWithDegreesAndGradiansAsTheFix) {
   EXPECT_EQ(o.output.find("40 rad"), std::string::npos) << o.output;
 }
 
+TEST(MessageClasses, AnAngleInGradiansIsReadWithAWarning) {
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 40 grade\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  const std::string path = write_deck_file(kScratch, "grade", deck);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_SAYS(o, "tunica: warning: " + path + ":" + std::to_string(line_of(deck, "beta: 40 grade")) +
+                     ":11: key 'materials.aorta.beta': 40 grade is 36 deg: `grade` is the gradian (400 to a turn), not "
+                     "the degree; write `40 deg` if degrees are meant");
+}
+
 TEST(MessageClasses, OutOfRangeIsEchoedInTheUnitTyped) {
   expect_deck_message("out-of-range", "thickness: 0.122 mm", "thickness: -122 um", "thickness: -122 um",
                       "parts.wall.thickness", "value -122 um (= -0.122 mm) is out of range", "(must be > 0 mm)");
