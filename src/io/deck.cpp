@@ -258,8 +258,26 @@ int step_index(const DeckNode& deck, const Params& p, const std::string& key) {
   return found.front();
 }
 
+/// What a part without `mesh` is told to add: an example for its element.
+std::string mesh_fix(const std::string& element) {
+  if (element == "membrane")
+    return "add the part's geometry, e.g. `mesh: {type: tube, radius: 1 mm, length: 5 mm, around: 16, along: 10}` "
+           "(generated: tube, sphere or octant) or `mesh: {type: gmsh, file: wall.msh, surface: wall}` (a Gmsh mesh)";
+  if (element == "axisymmetric_solid")
+    return "add the part's geometry, e.g. `mesh: {type: grid, z0: 0 mm, z1: 5 mm, inner: 1 mm, outer: 1.2 mm, "
+           "elements_r: 4, elements_z: 20}`";
+  return "add the part's geometry, e.g. `mesh: {type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: 10}` (a "
+         "straight meridian from [r, z] to [r, z]), or for a balloon `mesh: {type: arc, center: [0 mm, 0 mm], radius: "
+         "5 mm, start_angle: -90 deg, end_angle: 90 deg, elements: 20}`";
+}
+
 void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
-  const DeckNode parts = deck.required("parts");
+  const std::string material = m.materials.empty() ? "<material>" : m.materials.begin()->first;
+  const DeckNode parts = deck.required(
+      "parts", fmt::format(": add the bodies, e.g. `parts: {{wall: {{element: axisymmetric_membrane, material: {}, "
+                           "thickness: 0.1 mm, mesh: {{type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: "
+                           "10}}}}}}` (user guide §3)",
+                           material));
   if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
   SurfaceMeshCache cache;
   cache.allow_scripts = options.allow_scripts;
@@ -268,7 +286,10 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
     const std::string element =
         node.is_map() && node.has("element") && node["element"].is_scalar() ? node["element"].as_string() : "";
     const bool solid = element == "axisymmetric_solid", shell = element == "axisymmetric_shell";
-    const Params p = read_params(node, solid ? solid_part_spec() : shell ? shell_part_spec() : part_spec(), m.units);
+    ComponentSpec spec = solid ? solid_part_spec() : shell ? shell_part_spec() : part_spec();
+    for (ParamSpec& q : spec.params)
+      if (q.name == "mesh") q.missing_fix = mesh_fix(element);
+    const Params p = read_params(node, spec, m.units);
     Part part;
     part.name = name;
     part.element = p.text("element");
@@ -437,8 +458,19 @@ int entering_part(const Model& m, const std::string& target) {
   return late;
 }
 
+/// What a deck without `steps` is told to add: a step that sets one of its loads or boundaries.
+std::string steps_fix(const Model& m) {
+  const std::string set = !m.loads.empty()        ? m.loads.front().name + ": 10 kPa"
+                          : !m.boundaries.empty() ? m.boundaries.front().name + ": 1 mm"
+                                                  : "<a boundary or load>: <its value>";
+  return fmt::format(": add the load steps, solved in order, e.g. `steps: [{{name: load, increments: 10, set: {{{}}}}}]`; "
+                     "a step ramps each boundary and load of its `set` to the value given, in `increments` equal "
+                     "increments",
+                     set);
+}
+
 void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
-  const DeckNode steps = deck.required("steps");
+  const DeckNode steps = deck.required("steps", steps_fix(m));
   if (!steps.is_sequence() || steps.items().empty()) steps.fail("expected a list of steps");
   for (const auto& node : steps.items()) {
     const Params p = read_params(node, step_spec(), m.units);
@@ -723,7 +755,10 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   m.deck_file = file;
   if (deck.has("title")) m.title = deck["title"].as_string();
   {
-    const Params u = read_params(deck.required("units"), units_spec(), m.units);
+    const Params u = read_params(deck.required("units", ": add the deck's unit system, e.g. `units: {length: mm, force: "
+                                                        "N}`: bare numbers are then in mm and N, and stresses and "
+                                                        "pressures in N/mm² = MPa"),
+                                 units_spec(), m.units);
     try {
       m.units = UnitSystem(u.text("length"), "N");
     } catch (const std::invalid_argument& e) {
@@ -737,7 +772,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
                           did_you_mean(u.text("force"), {"N", "mN", "kN", "uN"}));
     }
   }
-  const DeckNode mats = deck.required("materials");
+  const DeckNode mats = deck.required(
+      "materials", ": add the materials the parts name, e.g. `materials: {wall: {type: neo_hookean, mu: 100 kPa}}` (the "
+                   "types and their constants are in the deck reference)");
   if (!mats.is_map() || mats.entries().empty()) mats.fail("expected a map of materials (name: {type: ..., ...})");
   for (const auto& [name, node] : mats.entries()) {
     if (!node.is_map()) node.fail("expected a map with `type` and the model's constants");

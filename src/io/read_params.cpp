@@ -52,9 +52,19 @@ std::string value_placeholder(const ParamSpec& p, const UnitSystem& units) {
       for (const auto& c : p.choices) list += (list.empty() ? "" : " | ") + c;
       return "<" + list + ">";
     }
-    case ParamType::structured: return "<...>";
+    case ParamType::structured: {
+      const std::string shape = p.choices.empty() ? "" : p.choices.front();  // structured(): its shape
+      return shape == "list" ? "[...]" : shape == "map" ? "{...}" : "<...>";
+    }
   }
   return "<...>";
+}
+
+/// " (<doc>): add `<key>: <placeholder>` to '<map>'", or ": <the key's own fix>".
+std::string missing_fix(const ParamSpec& p, const DeckNode& map, const UnitSystem& units) {
+  if (!p.missing_fix.empty()) return ": " + p.missing_fix;
+  return fmt::format(" ({}): add `{}: {}` to {}", p.doc, p.name, value_placeholder(p, units),
+                     map.path().empty() ? std::string("the deck") : "'" + map.path() + "'");
 }
 
 }  // namespace
@@ -92,7 +102,8 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
   out.set_where(node.where());
   for (const auto& p : spec.params) {
     if (p.type == ParamType::structured) {
-      if (p.required) node.required(p.name);
+      if (p.required && !node.has(p.name)) node.required(p.name, missing_fix(p, node, units));
+      if (p.required) node.required(p.name);  // present: not null
       continue;  // read by the section itself
     }
     const DeckNode given = node[p.name];
@@ -101,13 +112,7 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
     if (given.yaml().IsDefined() && given.yaml().IsNull()) given.fail("key '" + p.name + "' has no value");
     const bool missing = !given.yaml().IsDefined();
     if (missing) {
-      if (p.required) {
-        SourceLocation w = node.where();
-        w.key = given.path();
-        throw InputError(w, "missing required key '" + p.name + "' (" + p.doc + "): add `" + p.name + ": " +
-                                value_placeholder(p, units) + "` to " +
-                                (node.path().empty() ? std::string("the deck") : "'" + node.path() + "'"));
-      }
+      if (p.required) node.required(p.name, missing_fix(p, node, units));
       if (p.default_text.empty()) continue;
     }
     // yaml-cpp nodes have reference semantics (assigning to a missing one throws): build anew.

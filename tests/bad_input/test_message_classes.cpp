@@ -107,6 +107,39 @@ TEST(MessageClasses, MissingRequiredKeySaysWhatToAdd) {
                       "add `thickness: <a length in mm>` to 'parts.wall'");
 }
 
+/// The text between the first "e.g. `" after `from` in `output` and the closing "`".
+std::string example_after(const std::string& output, const std::string& from) {
+  const std::size_t at = output.find("e.g. `", output.find(from));
+  if (at == std::string::npos) return "";
+  const std::size_t end = output.find('`', at + 6);
+  return end == std::string::npos ? "" : output.substr(at + 6, end - at - 6);
+}
+
+TEST(MessageClasses, MissingSectionOrMeshGivesAnExampleThatWorks) {
+  // Without `units`, `steps` or a part's `mesh`, the message gives an example of the key to add;
+  // added as given, the deck is valid.
+  const std::string text = read_text(kExample);
+  struct Case {
+    std::string name, cut, key, insert_before, indent;
+  };
+  const std::string steps = text.substr(text.find("steps:"), text.find("output:") - text.find("steps:"));
+  for (const Case& c : {Case{"no-units", "units: {length: mm, force: N}\n", "units", "\nmaterials:", ""},
+                        Case{"no-steps", steps, "steps", "output:", ""},
+                        Case{"no-mesh", "    mesh: {type: line, from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm], elements: 1}\n",
+                             "parts.wall.mesh", "\nboundary:", "    "}}) {
+    const std::string cut = replace(text, c.cut, "");
+    const std::string path = write_deck_file(kScratch, c.name, cut);
+    const Outcome o = run_cli("check " + path);
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_SAYS(o, "key '" + c.key + "': missing required key '" + c.key.substr(c.key.rfind('.') + 1) + "': add ");
+    const std::string example = example_after(o.output, "missing required key");
+    ASSERT_FALSE(example.empty()) << o.output;
+    const std::string fixed = replace(cut, c.insert_before, "\n" + c.indent + example + "\n" + c.insert_before);
+    const Outcome again = run_cli("check " + write_deck_file(kScratch, c.name + "-fixed", fixed));
+    EXPECT_EQ(again.exit_code, 0) << example << "\n" << again.output;
+  }
+}
+
 // ---------------------------------------------------------------- values and units
 
 TEST(MessageClasses, UnitOfTheWrongDimensionGivesOneOfTheRightOne) {
