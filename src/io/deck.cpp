@@ -7,13 +7,11 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <tuple>
 
 #include "core/article.hpp"
 #include "core/bounded_file.hpp"
@@ -24,6 +22,7 @@
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "io/unitless_values.hpp"
+#include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/rigid_motion_check.hpp"
@@ -673,50 +672,6 @@ void read_output(const DeckNode& deck, Model& m) {
 }
 
 
-/// (line, column) of the first tab in the indentation of a line up to `last_line` (1-based), or (0, 0).
-std::pair<int, int> indenting_tab(const std::string& text, int last_line) {
-  int line = 1;
-  for (std::size_t start = 0; start < text.size() && line <= last_line; ++line) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    for (std::size_t i = start; i < end && (text[i] == ' ' || text[i] == '\t'); ++i)
-      if (text[i] == '\t') return {line, static_cast<int>(i - start) + 1};
-    start = end + 1;
-  }
-  return {0, 0};
-}
-
-/// (line, column) of the innermost `bracket` (`{` or `[`) still open at the start of line `last_line`
-/// (1-based), outside quotes and comments, or (0, 0). yaml-cpp reports an unclosed flow collection
-/// where it gave up, often lines later.
-std::pair<int, int> open_flow_bracket(const std::string& text, int last_line, char bracket) {
-  std::vector<std::tuple<char, int, int>> open;
-  int line = 1, column = 0;
-  char quote = 0;
-  bool comment = false;
-  for (std::size_t i = 0; i < text.size() && line < last_line; ++i) {
-    const char c = text[i];
-    ++column;
-    if (c == '\n') {
-      ++line;
-      column = 0;
-      comment = false;
-      continue;
-    }
-    if (comment) continue;
-    if (quote) {
-      if (c == quote) quote = 0;
-      continue;
-    }
-    if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t' || text[i - 1] == '\n')) comment = true;
-    else if (c == '"' || c == '\'') quote = c;
-    else if (c == '{' || c == '[') open.emplace_back(c, line, column);
-    else if ((c == '}' || c == ']') && !open.empty()) open.pop_back();
-  }
-  for (auto it = open.rbegin(); it != open.rend(); ++it)
-    if (std::get<0>(*it) == bracket) return {std::get<1>(*it), std::get<2>(*it)};
-  return {0, 0};
-}
-
 }  // namespace
 
 std::vector<ComponentSpec> deck_sections() {
@@ -731,21 +686,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
-    // yaml-cpp says "illegal tab when looking for indentation" or something further off: name the tab.
-    if (const auto tab = indenting_tab(text, line > 0 ? line : INT_MAX);
-        tab.first > 0 && (tab.first == line || e.msg.find("tab") != std::string::npos))
-      throw InputError({file, tab.first, tab.second, ""},
-                       "a tab indents this line, and YAML allows only spaces for indentation: replace the tab with "
-                       "spaces (YAML syntax error: " + e.msg + ")");
-    std::string where_opened;
-    if (e.msg.find("flow not found") != std::string::npos) {
-      const bool map = e.msg.find("map") != std::string::npos;
-      if (const auto open = open_flow_bracket(text, line > 0 ? line + 1 : INT_MAX, map ? '{' : '['); open.first > 0)
-        where_opened = fmt::format(" (the `{}` opened on line {}, column {} is not closed: add the `{}` there)",
-                                   map ? '{' : '[', open.first, open.second, map ? '}' : ']');
-    }
-    throw InputError({file, line, e.mark.is_null() ? 0 : e.mark.column + 1, ""}, "YAML syntax error: " + e.msg + where_opened);
+    throw yaml_syntax_error(e, text, file);
   }
   const DeckNode deck(root, file, "", {file, 1, 1, ""});
   if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");

@@ -94,6 +94,24 @@ TEST(MessageClasses, TabInTheIndentation) {
   EXPECT_SAYS(o, "tab.yaml:" + std::to_string(line_of(read_text(kExample), "    a1: 0.68238")) + ":1:");
 }
 
+TEST(MessageClasses, AClosingBracketOfTheWrongKindSaysWhichClosesThere) {
+  // yaml-cpp says only "illegal flow end".
+  const std::string text = read_text(kExample);
+  const Outcome o = expect_deck_message(
+      "flow-end", "base:    {node_set: wall.start, dofs: [z]}", "base:    {node_set: wall.start, dofs: [z}",
+      "dofs: [z}", "", "YAML syntax error: illegal flow end: this `}` would close the `[` opened on line " +
+                           std::to_string(line_of(text, "dofs: [z]")) + ", column 41, which only `]` closes",
+      "write `]` before this `}` (`[z]}`), or `]` instead of it");
+  EXPECT_SAYS(o, "flow-end.yaml:" + std::to_string(line_of(text, "dofs: [z]")) + ":43:");
+}
+
+TEST(MessageClasses, AClosingBracketThatClosesNothingSaysSo) {
+  expect_deck_message("flow-end-stray", "solver: {residual_tolerance: 1e-10}", "solver: {residual_tolerance: 1e-10}}",
+                      "solver: {residual", "", "YAML syntax error: illegal flow end: this `}` closes no `{`, since none "
+                      "is open here",
+                      "Remove it, or add the `{` where the map begins; a value that holds a `}` is written in quotes");
+}
+
 TEST(MessageClasses, UnknownKeyListsTheAllowedOnesAndTheNearest) {
   expect_deck_message("unknown-key", "    thickness: 0.122 mm", "    tickness: 0.122 mm", "tickness:",
                       "parts.wall.tickness", "unknown key 'tickness' (allowed here: element, material, thickness,",
