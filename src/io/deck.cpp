@@ -25,6 +25,7 @@
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
+#include "model/node_label.hpp"
 #include "model/rigid_motion_check.hpp"
 #include "quantities/history_quantity.hpp"
 
@@ -386,6 +387,14 @@ void read_boundaries(const DeckNode& deck, Model& m) {
                                                      : "3-D DOFs are x, y and z") +
                ")");
       const int c = static_cast<int>(it - dof_names.begin());
+      if (std::find(b.dofs.begin(), b.dofs.end(), c) != b.dofs.end()) {
+        std::string others;
+        for (int k = 0; k < m.dofs_per_node(); ++k)
+          if (k != c && std::find(b.dofs.begin(), b.dofs.end(), k) == b.dofs.end())
+            others += (others.empty() ? "" : ", ") + dof_names[k];
+        d.fail("DOF '" + s + "' is listed twice in `dofs`: list each DOF once" +
+               (others.empty() ? std::string() : " (or write the one meant; not listed: " + others + ")"));
+      }
       if (c >= m.dofs_per_node())
         for (int n : m.node_sets[b.node_set].nodes)
           if (!m.has_slopes(n))
@@ -395,16 +404,34 @@ void read_boundaries(const DeckNode& deck, Model& m) {
     }
     m.boundaries.push_back(std::move(b));
   }
-  // A DOF may be prescribed by one boundary only.
-  std::map<long, std::string> owner;
-  for (const auto& b : m.boundaries)
-    for (int n : m.node_sets[b.node_set].nodes)
-      for (int d : b.dofs) {
-        auto [it, fresh] = owner.emplace(static_cast<long>(m.node_dof(n, d)), b.name);
-        if (!fresh && it->second != b.name)
-          throw InputError(b.where, fmt::format("boundary '{}' prescribes a DOF that boundary '{}' already prescribes",
-                                                b.name, it->second));
+  // A DOF may be prescribed by one boundary only: name a node both hold, the DOF and both boundaries.
+  std::map<long, std::size_t> owner;  // DOF -> the boundary that prescribes it
+  std::vector<std::string> dof_names = m.dof_names();
+  dof_names.insert(dof_names.end(), {"slope_r", "slope_z"});
+  for (std::size_t k = 0; k < m.boundaries.size(); ++k) {
+    const Boundary& b = m.boundaries[k];
+    for (int d : b.dofs) {
+      std::size_t other = k;
+      std::vector<int> shared;  // the nodes whose DOF d boundary `other` prescribes too
+      for (int n : m.node_sets[b.node_set].nodes) {
+        const auto [it, fresh] = owner.emplace(static_cast<long>(m.node_dof(n, d)), k);
+        if (fresh || it->second == k) continue;
+        if (other == k) other = it->second;
+        if (it->second == other) shared.push_back(n);
       }
+      if (shared.empty()) continue;
+      const Boundary& a = m.boundaries[other];
+      throw InputError(
+          b.where,
+          fmt::format("boundary '{}' (line {}, node set '{}') and boundary '{}' (line {}, node set '{}') both prescribe "
+                      "{} of {}{}: a DOF takes one prescribed value. Remove '{}' from the `dofs` of one of them, or "
+                      "give one a node set without the shared node{}",
+                      b.name, b.where.line, m.node_sets[b.node_set].name, a.name, a.where.line,
+                      m.node_sets[a.node_set].name, dof_names[d], node_label(m, shared.front()),
+                      shared.size() > 1 ? fmt::format(" (and {} more node(s) of both sets)", shared.size() - 1) : "",
+                      dof_names[d], shared.size() > 1 ? "s" : ""));
+    }
+  }
 }
 
 void read_loads(const DeckNode& deck, Model& m) {

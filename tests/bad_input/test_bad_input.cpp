@@ -34,12 +34,6 @@ void expect_error(const std::string& name, const std::string& from, const std::s
   EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
 }
 
-/// `pattern` with each "{}" replaced by the line of the next of `needles` in `text`.
-std::string fmt_lines(std::string pattern, const std::string& text, const std::vector<std::string>& needles) {
-  for (const std::string& n : needles) pattern.replace(pattern.find("{}"), 2, std::to_string(line_of(text, n)));
-  return pattern;
-}
-
 }  // namespace
 
 TEST(BadInput, TheExampleItselfIsValid) {

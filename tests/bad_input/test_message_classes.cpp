@@ -281,6 +281,40 @@ TEST(MessageClasses, UndefinedContactPairListsThePairs) {
   EXPECT_SAYS(o, "did you mean 'wall_sleeve'?");
 }
 
+TEST(MessageClasses, ADofHeldByTwoBoundariesNamesTheNodeTheDofAndBothBoundaries) {
+  const std::string text = replace(read_text(kExample), "  stretch: {node_set: wall.end, dofs: [z]}",
+                                   "  stretch: {node_set: wall.end, dofs: [z]}\n  clamp: {node_set: wall.all, dofs: [z]}");
+  const Outcome o = expect_check_error(
+      kScratch, "dof-twice", text, "clamp:", "boundary.clamp",
+      fmt_lines("boundary 'clamp' (line {}, node set 'wall.all') and boundary 'base' (line {}, node set 'wall.start') "
+                "both prescribe z of node 0 of part 'wall'",
+                text, {"clamp:", "base:"}));
+  EXPECT_SAYS(o, "a DOF takes one prescribed value. Remove 'z' from the `dofs` of one of them, or give one a node set "
+                 "without the shared node");
+}
+
+TEST(MessageClasses, ADofHeldTwiceNamesTheNodeByItsTagInTheMeshFile) {
+  // The square's physical curve `edge` (nodes 11, 12) held in x, y, z, and the whole surface in z.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "dof-twice-mesh";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << square_msh();
+  const std::string deck = replace(kMeshDeck, "  fixed: {node_set: edge, dofs: [x, y, z]}",
+                                   "  fixed: {node_set: edge, dofs: [x, y, z]}\n  flat: {node_set: wall.all, dofs: [z]}");
+  std::ofstream(dir / "deck.yaml") << deck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, fmt_lines((dir / "deck.yaml").string() + ":{}:", deck, {"flat:"}));
+  EXPECT_SAYS(o, fmt_lines("boundary 'flat' (line {}, node set 'wall.all') and boundary 'fixed' (line {}, node set 'edge') "
+                           "both prescribe z of node 11 of square.msh (and 1 more node(s) of both sets)",
+                           deck, {"flat:", "fixed:"}));
+}
+
+TEST(MessageClasses, ADofListedTwiceInOneBoundaryIsRefused) {
+  expect_deck_message("dof-listed-twice", "base:    {node_set: wall.start, dofs: [z]}",
+                      "base:    {node_set: wall.start, dofs: [z, z]}", "dofs: [z, z]", "boundary.base.dofs[1]",
+                      "DOF 'z' is listed twice in `dofs`: list each DOF once", "(or write the one meant; not listed: r)");
+}
+
 TEST(MessageClasses, NodeNumberOutsideThePartGivesTheNumberAndTheRange) {
   expect_deck_message("node-range", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [0, 7]}\n\nboundary:",
                       "nodes: [0, 7]", "node_sets.mid.nodes[1]", "node index 7 is outside the part", "(0 … 1)");
