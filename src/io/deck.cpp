@@ -227,9 +227,10 @@ void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
     block.nodes.push_back(first + static_cast<int>(e) + 1);
   }
   part.blocks.push_back(std::move(block));
-  m.node_sets.push_back({part.name + ".start", {part.nodes.front()}});
-  m.node_sets.push_back({part.name + ".end", {part.nodes.back()}});
-  m.node_sets.push_back({part.name + ".all", part.nodes});
+  const std::string origin = fmt::format("part '{}' (line {}) as one of its generated sets", part.name, node.where().line);
+  m.node_sets.push_back({part.name + ".start", {part.nodes.front()}, origin});
+  m.node_sets.push_back({part.name + ".end", {part.nodes.back()}, origin});
+  m.node_sets.push_back({part.name + ".all", part.nodes, origin});
 }
 
 /// The name of step k (0-based) of the deck's `steps` list, "step" if it has none.
@@ -335,12 +336,15 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
 void read_node_sets(const DeckNode& deck, Model& m) {
   if (!deck.has("node_sets")) return;
   for (const auto& [name, node] : deck["node_sets"].entries()) {
-    if (m.find_node_set(name) >= 0) node.fail("node set '" + name + "' is already defined");
+    if (const int earlier = m.find_node_set(name); earlier >= 0)
+      node.fail(fmt::format("node set '{}' is already defined, by {}: give this one another name (here and where the "
+                            "deck names it)",
+                            name, m.node_sets[earlier].origin));
     const Params p = read_params(node, node_set_spec(), m.units);
     const int part = m.find_part(p.text("part"));
     if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "' " + known_names(p.text("part"), names_of(m.parts), "parts"));
     const auto& pn = m.parts[part].nodes;
-    NodeSet set{name, {}};
+    NodeSet set{name, {}, fmt::format("node_sets.{} (line {})", name, node.where().line)};
     const DeckNode nodes = node.required("nodes");
     const bool axisym = m.geometry == Geometry::axisymmetric && !m.parts[part].is_solid();
     if (m.parts[part].is_solid() && nodes.is_scalar() && (nodes.as_string() == "start" || nodes.as_string() == "end"))

@@ -30,6 +30,8 @@ struct SurfaceMesh {
   std::vector<Eigen::Vector3d> nodes;
   std::vector<Surface> surfaces;
   std::map<std::string, std::vector<int>> node_sets;  ///< sorted, unique node indices
+  /// Per node set of a mesh file, the group that defines it ("physical curve 3"); for messages.
+  std::map<std::string, std::string> node_set_origins;
   /// Node tags as written in the mesh file (empty for generated meshes), one per node.
   std::vector<long> node_tags;
 };

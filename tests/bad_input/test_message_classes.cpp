@@ -315,6 +315,34 @@ TEST(MessageClasses, ADofListedTwiceInOneBoundaryIsRefused) {
                       "DOF 'z' is listed twice in `dofs`: list each DOF once", "(or write the one meant; not listed: r)");
 }
 
+TEST(MessageClasses, ANodeSetDefinedTwiceNamesBothDefinitions) {
+  // The deck's own set and the one every axisymmetric part gets.
+  const std::string text = replace(read_text(kExample), "\nboundary:", "\nnode_sets:\n  wall.end: {part: wall, nodes: [0]}\n\nboundary:");
+  expect_check_error(kScratch, "set-twice", text, "wall.end: {part", "node_sets.wall.end",
+                     fmt_lines("node set 'wall.end' is already defined, by part 'wall' (line {}) as one of its generated "
+                               "sets: give this one another name (here and where the deck names it)",
+                               text, {"    element: axisymmetric_membrane"}));
+  // The deck's set and a physical group of the mesh file.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "set-twice-mesh";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << square_msh();
+  const std::string deck = replace(kMeshDeck, "\nboundary:", "\nnode_sets:\n  edge: {part: wall, nodes: all}\nboundary:");
+  std::ofstream(dir / "deck.yaml") << deck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, fmt_lines("node set 'edge' is already defined, by physical curve 10 'edge' of square.msh (the mesh of "
+                           "part 'wall', line {}): give this one another name",
+                           deck, {"mesh: {type: gmsh"}));
+  // A physical group named like a set the part gets.
+  std::string mesh = square_msh();
+  mesh = replace(mesh, "1 10 \"edge\"", "1 10 \"wall.all\"");
+  const MeshCase c = check_mesh("set-twice-group", mesh);
+  EXPECT_SAYS(c.o, fmt_lines("node set 'wall.all' is defined twice: by physical curve 10 'wall.all' of square.msh (the "
+                             "mesh of part 'wall', line {}), and by part 'wall' (line {}) as one of its generated sets. "
+                             "Rename one of them",
+                             kMeshDeck, {"mesh: {type: gmsh", "    element: membrane"}));
+}
+
 TEST(MessageClasses, NodeNumberOutsideThePartGivesTheNumberAndTheRange) {
   expect_deck_message("node-range", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [0, 7]}\n\nboundary:",
                       "nodes: [0, 7]", "node_sets.mid.nodes[1]", "node index 7 is outside the part", "(0 … 1)");
