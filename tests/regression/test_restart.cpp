@@ -14,6 +14,8 @@
 #include <thread>
 
 #include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
 #include "../support/scratch.hpp"
 #include "../support/shell_decks.hpp"
 
@@ -128,14 +130,52 @@ TEST(Restart, SigtermStopsAfterTheCurrentIncrementAndTheRunCanContinue) {
   EXPECT_EQ(std::count(h.begin(), h.end(), '\n'), 302);
 }
 
-TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
+TEST(Restart, ACompletedRunOrAnotherModelIsRefusedWithTheWayOut) {
   const fs::path dir = scratch("restart", "refuse");
   const std::string example = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
-  ASSERT_EQ(run("run " + example + " -q -o " + (dir / "done").string()), 0);
-  EXPECT_EQ(run("run " + example + " --restart " + (dir / "done").string()), 2);
+  const std::string done = (dir / "done").string();
+  ASSERT_EQ(run("run " + example + " -q -o " + done), 0);
+  // Nothing left to run: add a step, or run afresh.
+  Outcome o = run_cli("run " + example + " --restart " + done);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("the run in " + done + " has already completed every step of this deck (the last is step 2 "
+                          "'inflation'), so nothing is left to run. To continue it, add a step after step 2 'inflation' "
+                          "to `steps` (e.g. `- {name: more, increments: 10, set: {lumen: <its new value>}}`)"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("leave out --restart (`tunica run " + example + " -o <new folder>`"), std::string::npos)
+      << o.output;
+  // Completed, and a key it depends on changed: the key, and a fresh folder for the changed deck.
+  const std::string changed = (dir / "changed.yaml").string();
+  const std::string changed_text = replace(read_text(example), "a1: 0.68238", "a1: 0.7");
+  std::ofstream(changed) << changed_text;
+  o = run_cli("run " + changed + " --restart " + done);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  const std::string line = std::to_string(line_of(changed_text, "a1: 0.7"));
+  EXPECT_NE(o.output.find(changed + ":" + line + ":"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("line " + line + ": materials.aorta.a1 (was '0.68238', now '0.7')"), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("That run has already completed every step of this deck, so a restart could only continue "
+                          "it, with the values it had. To run the changed deck, start it in a fresh output folder"),
+            std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("nothing is left to run"), std::string::npos) << o.output;
+  // Another model: which keys differ, and both ways out.
   const std::string other = (dir / "other.yaml").string();
   std::ofstream(other) << replace(read_text(example), "elements: 1}", "elements: 3}");
-  EXPECT_EQ(run("run " + other + " --restart " + (dir / "done").string()), 2);
+  o = run_cli("run " + other + " --restart " + done);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("the run in " + done + " is of another model than this deck: it was started with the deck '" +
+                          example + "' and has 4 DOFs, 2 boundary condition(s) and 1 load(s), where this deck has 8, 2 "
+                          "and 1;"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("parts.wall.mesh.elements (was '1', now '3')"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("Run this deck in a fresh output folder (`tunica run " + other + " -o <new folder>`), or "
+                          "continue that run with the deck that wrote it (`tunica run " + example + " --restart " +
+                          done + "`)."),
+            std::string::npos)
+      << o.output;
   EXPECT_EQ(run("run " + example + " --restart " + (dir / "nothing-here").string()), 2);
 }
 
