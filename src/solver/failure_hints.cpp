@@ -71,12 +71,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
             std::isfinite(peak) ? fmt::format("its trend puts a maximum near {:.4g} kPa, above the {:.4g} kPa the failed "
                                               "increment tried", kpa(peak), kpa(tried))
                                 : "its trend shows no maximum";
+        // Where to look: the last ParaView frame shows the state the run stopped at, if frames are written.
+        const std::string look =
+            model.output.vtk ? "look at newton.csv (active_changes) and the last frame where the residual sits, e.g. at "
+                               "contact"
+                             : "look at newton.csv (active_changes) and history.csv for where the residual sits, e.g. "
+                               "at contact (no ParaView frames were written, `output.vtk` is false: set it to true to "
+                               "see the last converged state)";
         add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
                         "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. "
                         "The failure is likely not a limit point of the pressure but a local one, which "
-                        "`volume_control` need not pass: look at newton.csv (active_changes) and the last frame "
-                        "where the residual sits, e.g. at contact (user guide §6).",
-                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend));
+                        "`volume_control` need not pass: {} (user guide §6).",
+                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend,
+                        look));
       }
     }
   }

@@ -136,6 +136,20 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   EXPECT_NE(past.find("likely at a maximum"), std::string::npos) << past;
 }
 
+TEST(FailureHints, WithoutParaViewFramesTheHintPointsToWhatWasWritten) {
+  // The hint for a local failure sends the user to the last frame; with `vtk: false` there is none.
+  Model m = one_load_model();
+  const auto slowing = along({{0, 0}, {1, 1}, {1.1, 2}, {1.18, 3}, {1.24, 4}});
+  const std::string with = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.25));
+  EXPECT_NE(with.find("look at newton.csv (active_changes) and the last frame"), std::string::npos) << with;
+  m.output.vtk = false;
+  const std::string without = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.25));
+  EXPECT_EQ(without.find("frame where"), std::string::npos) << without;
+  EXPECT_EQ(without.find("last frame"), std::string::npos) << without;
+  EXPECT_NE(without.find("look at newton.csv (active_changes) and history.csv"), std::string::npos) << without;
+  EXPECT_NE(without.find("no ParaView frames were written, `output.vtk` is false"), std::string::npos) << without;
+}
+
 namespace {
 
 /// A neo-Hookean tube (slave, `balloon` elements) pressed 0.001 mm into a Fung tube (master,
