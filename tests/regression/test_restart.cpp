@@ -248,3 +248,25 @@ TEST(Restart, ARunThatStopsOnAFailedIncrementHasAFrameOfItsLastConvergedState) {
   // The folder is consistent: a restart accepts it (and stops at the same limit point).
   EXPECT_EQ(run("run " + deck + " -q --restart " + (dir / "out").string()), 3);
 }
+
+TEST(Restart, ARestartedRunThatStopsAtTheLimitPointGivesTheSameHint) {
+  // The balloon pushed past its pressure maximum stops with the hint that names volume control,
+  // from the pressure–volume curve of the step's converged increments. Restarted from its last
+  // converged increment, the run fails there again and the hint is the same: the restart file
+  // keeps what the hint reads of the increments before it.
+  const fs::path dir = scratch("restart", "hint");
+  std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  text = replace(replace(replace(text, "increments: 20", "increments: 10"), "elements: 100}", "elements: 20}"),
+                 "inflation: 0.0118 MPa", "inflation: 0.015 MPa");
+  const std::string deck = (dir / "limit.yaml").string();
+  std::ofstream(deck) << replace(text, "output:\n", "output:\n  vtk_segments: 8\n");
+  const Outcome first = run_cli("run " + deck + " -q -o " + (dir / "out").string());
+  ASSERT_EQ(first.exit_code, 3) << first.output;
+  const std::size_t hint = first.output.find("Hint: the pressure–volume curve of load 'inflation' has flattened");
+  ASSERT_NE(hint, std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("`volume_control: {load: inflation, volume: <enclosed volume>}`"), std::string::npos)
+      << first.output;
+  const Outcome again = run_cli("run " + deck + " -q --restart " + (dir / "out").string());
+  ASSERT_EQ(again.exit_code, 3) << again.output;
+  EXPECT_NE(again.output.find(first.output.substr(hint)), std::string::npos) << again.output;
+}
