@@ -21,6 +21,7 @@
 #include "output/atomic_file.hpp"
 #include "output/output_lock.hpp"
 #include "output/restart_file.hpp"
+#include "output/restart_fit.hpp"
 #include "output/run_writer.hpp"
 #include "output/stop_signal.hpp"
 #include "solver/analysis.hpp"
@@ -34,83 +35,6 @@ std::string for_terminal(const std::string& message) { return tunica::terminal_s
 constexpr int kInputErrorExit = 2;
 constexpr int kSolveErrorExit = 3;
 constexpr int kOtherErrorExit = 4;
-
-/// Errors unless the restart record fits the model (same DOFs, boundaries, loads; a step left to run).
-void check_restart_fits(const tunica::Model& m, const tunica::RestartRecord& r, const std::string& file) {
-  const tunica::Checkpoint& c = r.checkpoint;
-  const auto fail = [&](const std::string& what) { throw tunica::InputError({file, 0, 0, ""}, what); };
-  if (c.u.size() != m.num_dofs())
-    fail(fmt::format("the run to resume has {} DOFs, this deck {}: not the same model", c.u.size(), m.num_dofs()));
-  if (c.loads.boundary.size() != m.boundaries.size() || c.step_start.boundary.size() != m.boundaries.size() ||
-      c.loads.pressure.size() != m.loads.size() || c.step_start.pressure.size() != m.loads.size())
-    fail("the run to resume has other boundary conditions or loads than this deck");
-  if (c.step >= static_cast<int>(m.steps.size()) || (c.step == static_cast<int>(m.steps.size()) - 1 && c.fraction >= 1.0))
-    fail("the run to resume has already completed every step of this deck");
-  if (!r.has_fingerprint) {
-    std::fprintf(stderr, "tunica: warning: %s predates restart fingerprints: that the deck is unchanged is not checked\n",
-                 for_terminal(file).c_str());
-    return;
-  }
-  // What the converged increments depend on (io/deck_fingerprint.hpp): every key of the model
-  // and of the steps with a converged increment (c.step, 0-based, once its fraction is past 0)
-  // must be as the run had it.
-  const auto reached = [&](const tunica::FingerprintEntry& e) {
-    return e.step < c.step || (e.step == c.step && c.fraction > 0);
-  };
-  const auto shown = [](const std::string& v) { return v.empty() ? std::string("(not given)") : "'" + v + "'"; };
-  std::map<std::string, const tunica::FingerprintEntry*> now, then;
-  for (const auto& e : m.fingerprint)
-    if (reached(e)) now[e.key] = &e;
-  for (const auto& e : r.fingerprint)
-    if (reached(e)) then[e.key] = &e;
-  // Each change with where to look in the deck: the line of the key, or for a key no longer
-  // given, that of the nearest map or list that held it.
-  struct Change {
-    std::string text;
-    int line = 0, column = 0;
-  };
-  const auto change = [&](const std::string& key, const std::string& what) {
-    Change c;
-    std::string at = key;
-    for (;;) {
-      if (const auto it = m.fingerprint_places.find(at); it != m.fingerprint_places.end()) {
-        std::tie(c.line, c.column) = it->second;
-        break;
-      }
-      const std::size_t cut = at.find_last_of(".[");
-      if (cut == std::string::npos || cut == 0) break;
-      at.resize(cut);
-    }
-    c.text = c.line == 0 ? key + " " + what
-             : at == key ? fmt::format("line {}: {} {}", c.line, key, what)
-                         : fmt::format("line {} ('{}'): {} {}", c.line, at, key, what);
-    return c;
-  };
-  std::vector<Change> changes;
-  for (const auto& e : r.fingerprint) {
-    if (!reached(e)) continue;
-    const auto it = now.find(e.key);
-    if (it == now.end())
-      changes.push_back(change(e.key, fmt::format("(was {}, now not given)", shown(e.value))));
-    else if (it->second->value != e.value)
-      changes.push_back(change(e.key, fmt::format("(was {}, now {})", shown(e.value), shown(it->second->value))));
-  }
-  for (const auto& e : m.fingerprint)
-    if (reached(e) && !then.count(e.key))
-      changes.push_back(change(e.key, fmt::format("(not given before, now {})", shown(e.value))));
-  if (changes.empty()) return;
-  std::string list;
-  for (std::size_t k = 0; k < changes.size() && k < 8; ++k) list += "\n  " + changes[k].text;
-  if (changes.size() > 8) list += fmt::format("\n  and {} more", changes.size() - 8);
-  // The message stands at the first change's line; the list names each key.
-  throw tunica::InputError(
-      {m.deck_file, changes.front().line, changes.front().column, ""},
-      fmt::format("the deck differs from the run to resume in what its converged increments depend on ({} in {}):{}\n"
-                  "Undo the change, or start a new run in a new folder. Free to change on a restart: title, solver, "
-                  "the steps not yet reached, each step's solver and name, and output other than history and "
-                  "vtk_fields. A value respelt (30 kPa as 0.03 MPa) counts as a change.",
-                  changes.size() == 1 ? "this key" : fmt::format("{} keys", changes.size()), file, list));
-}
 
 /// What the model reads as valid but is likely not meant (assembly/pressure_load_checks.hpp).
 void print_warnings(const tunica::System& system) {
@@ -135,7 +59,8 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   if (!restart.empty()) {
     const std::string file = restart + "/restart.txt";
     resume = std::make_unique<tunica::RestartRecord>(tunica::read_restart(file));
-    check_restart_fits(model, *resume, file);
+    if (const std::string warning = tunica::check_restart_fits(model, *resume, file); !warning.empty())
+      std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(warning).c_str());
     if (!quiet)
       std::printf("resuming from step %d, increment %d (step fraction %.6g) in %s\n", resume->checkpoint.step + 1,
                   resume->checkpoint.increment, resume->checkpoint.fraction, restart.c_str());

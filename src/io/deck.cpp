@@ -7,15 +7,14 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
-#include <tuple>
 
+#include "core/article.hpp"
 #include "core/bounded_file.hpp"
 #include "core/printable.hpp"
 #include "io/deck_contact.hpp"
@@ -25,8 +24,10 @@
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "io/unitless_values.hpp"
+#include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
+#include "model/node_label.hpp"
 #include "model/rigid_motion_check.hpp"
 #include "model/volume_axis_check.hpp"
 #include "quantities/history_quantity.hpp"
@@ -300,9 +301,10 @@ void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
     block.nodes.push_back(first + static_cast<int>(e) + 1);
   }
   part.blocks.push_back(std::move(block));
-  m.node_sets.push_back({part.name + ".start", {part.nodes.front()}});
-  m.node_sets.push_back({part.name + ".end", {part.nodes.back()}});
-  m.node_sets.push_back({part.name + ".all", part.nodes});
+  const std::string origin = fmt::format("part '{}' (line {}) as one of its generated sets", part.name, node.where().line);
+  m.node_sets.push_back({part.name + ".start", {part.nodes.front()}, origin});
+  m.node_sets.push_back({part.name + ".end", {part.nodes.back()}, origin});
+  m.node_sets.push_back({part.name + ".all", part.nodes, origin});
 }
 
 /// The name of step k (0-based) of the deck's `steps` list, "step" if it has none.
@@ -331,8 +333,26 @@ int step_index(const DeckNode& deck, const Params& p, const std::string& key) {
   return found.front();
 }
 
+/// What a part without `mesh` is told to add: an example for its element.
+std::string mesh_fix(const std::string& element) {
+  if (element == "membrane")
+    return "add the part's geometry, e.g. `mesh: {type: tube, radius: 1 mm, length: 5 mm, around: 16, along: 10}` "
+           "(generated: tube, sphere or octant) or `mesh: {type: gmsh, file: wall.msh, surface: wall}` (a Gmsh mesh)";
+  if (element == "axisymmetric_solid")
+    return "add the part's geometry, e.g. `mesh: {type: grid, z0: 0 mm, z1: 5 mm, inner: 1 mm, outer: 1.2 mm, "
+           "elements_r: 4, elements_z: 20}`";
+  return "add the part's geometry, e.g. `mesh: {type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: 10}` (a "
+         "straight meridian from [r, z] to [r, z]), or for a balloon `mesh: {type: arc, center: [0 mm, 0 mm], radius: "
+         "5 mm, start_angle: -90 deg, end_angle: 90 deg, elements: 20}`";
+}
+
 void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
-  const DeckNode parts = deck.required("parts");
+  const std::string material = m.materials.empty() ? "<material>" : m.materials.begin()->first;
+  const DeckNode parts = deck.required(
+      "parts", fmt::format(": add the bodies, e.g. `parts: {{wall: {{element: axisymmetric_membrane, material: {}, "
+                           "thickness: 0.1 mm, mesh: {{type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: "
+                           "10}}}}}}` (user guide §3)",
+                           material));
   if (!parts.is_map() || parts.entries().empty()) parts.fail("expected a map of parts (name: {element, material, ...})");
   SurfaceMeshCache cache;
   cache.allow_scripts = options.allow_scripts;
@@ -341,7 +361,10 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
     const std::string element =
         node.is_map() && node.has("element") && node["element"].is_scalar() ? node["element"].as_string() : "";
     const bool solid = element == "axisymmetric_solid", shell = element == "axisymmetric_shell";
-    const Params p = read_params(node, solid ? solid_part_spec() : shell ? shell_part_spec() : part_spec(), m.units);
+    ComponentSpec spec = solid ? solid_part_spec() : shell ? shell_part_spec() : part_spec();
+    for (ParamSpec& q : spec.params)
+      if (q.name == "mesh") q.missing_fix = mesh_fix(element);
+    const Params p = read_params(node, spec, m.units);
     Part part;
     part.name = name;
     part.element = p.text("element");
@@ -387,12 +410,15 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
 void read_node_sets(const DeckNode& deck, Model& m) {
   if (!deck.has("node_sets")) return;
   for (const auto& [name, node] : deck["node_sets"].entries()) {
-    if (m.find_node_set(name) >= 0) node.fail("node set '" + name + "' is already defined");
+    if (const int earlier = m.find_node_set(name); earlier >= 0)
+      node.fail(fmt::format("node set '{}' is already defined, by {}: give this one another name (here and where the "
+                            "deck names it)",
+                            name, m.node_sets[earlier].origin));
     const Params p = read_params(node, node_set_spec(), m.units);
     const int part = m.find_part(p.text("part"));
     if (part < 0) p.fail("part", "undefined part '" + p.text("part") + "' " + known_names(p.text("part"), names_of(m.parts), "parts"));
     const auto& pn = m.parts[part].nodes;
-    NodeSet set{name, {}};
+    NodeSet set{name, {}, fmt::format("node_sets.{} (line {})", name, node.where().line)};
     const DeckNode nodes = node.required("nodes");
     const bool axisym = m.geometry == Geometry::axisymmetric && !m.parts[part].is_solid();
     if (m.parts[part].is_solid() && nodes.is_scalar() && (nodes.as_string() == "start" || nodes.as_string() == "end"))
@@ -449,6 +475,14 @@ void read_boundaries(const DeckNode& deck, Model& m) {
       auto it = std::find(dof_names.begin(), dof_names.end(), s);
       if (it == dof_names.end()) d.fail("unknown DOF '" + s + "' (" + allowed + ")");
       const int c = static_cast<int>(it - dof_names.begin());
+      if (std::find(b.dofs.begin(), b.dofs.end(), c) != b.dofs.end()) {
+        std::string others;
+        for (int k = 0; k < m.dofs_per_node(); ++k)
+          if (k != c && std::find(b.dofs.begin(), b.dofs.end(), k) == b.dofs.end())
+            others += (others.empty() ? "" : ", ") + dof_names[k];
+        d.fail("DOF '" + s + "' is listed twice in `dofs`: list each DOF once" +
+               (others.empty() ? std::string() : " (or write the one meant; not listed: " + others + ")"));
+      }
       if (c >= m.dofs_per_node())
         for (int n : m.node_sets[b.node_set].nodes)
           if (!m.has_slopes(n))
@@ -460,16 +494,34 @@ void read_boundaries(const DeckNode& deck, Model& m) {
     }
     m.boundaries.push_back(std::move(b));
   }
-  // A DOF may be prescribed by one boundary only.
-  std::map<long, std::string> owner;
-  for (const auto& b : m.boundaries)
-    for (int n : m.node_sets[b.node_set].nodes)
-      for (int d : b.dofs) {
-        auto [it, fresh] = owner.emplace(static_cast<long>(m.node_dof(n, d)), b.name);
-        if (!fresh && it->second != b.name)
-          throw InputError(b.where, fmt::format("boundary '{}' prescribes a DOF that boundary '{}' already prescribes",
-                                                b.name, it->second));
+  // A DOF may be prescribed by one boundary only: name a node both hold, the DOF and both boundaries.
+  std::map<long, std::size_t> owner;  // DOF -> the boundary that prescribes it
+  std::vector<std::string> dof_names = m.dof_names();
+  dof_names.insert(dof_names.end(), {"slope_r", "slope_z"});
+  for (std::size_t k = 0; k < m.boundaries.size(); ++k) {
+    const Boundary& b = m.boundaries[k];
+    for (int d : b.dofs) {
+      std::size_t other = k;
+      std::vector<int> shared;  // the nodes whose DOF d boundary `other` prescribes too
+      for (int n : m.node_sets[b.node_set].nodes) {
+        const auto [it, fresh] = owner.emplace(static_cast<long>(m.node_dof(n, d)), k);
+        if (fresh || it->second == k) continue;
+        if (other == k) other = it->second;
+        if (it->second == other) shared.push_back(n);
       }
+      if (shared.empty()) continue;
+      const Boundary& a = m.boundaries[other];
+      throw InputError(
+          b.where,
+          fmt::format("boundary '{}' (line {}, node set '{}') and boundary '{}' (line {}, node set '{}') both prescribe "
+                      "{} of {}{}: a DOF takes one prescribed value. Remove '{}' from the `dofs` of one of them, or "
+                      "give one a node set without the shared node{}",
+                      b.name, b.where.line, m.node_sets[b.node_set].name, a.name, a.where.line,
+                      m.node_sets[a.node_set].name, dof_names[d], node_label(m, shared.front()),
+                      shared.size() > 1 ? fmt::format(" (and {} more node(s) of both sets)", shared.size() - 1) : "",
+                      dof_names[d], shared.size() > 1 ? "s" : ""));
+    }
+  }
 }
 
 void read_loads(const DeckNode& deck, Model& m) {
@@ -523,8 +575,19 @@ int entering_part(const Model& m, const std::string& target) {
   return late;
 }
 
+/// What a deck without `steps` is told to add: a step that sets one of its loads or boundaries.
+std::string steps_fix(const Model& m) {
+  const std::string set = !m.loads.empty()        ? m.loads.front().name + ": 10 kPa"
+                          : !m.boundaries.empty() ? m.boundaries.front().name + ": 1 mm"
+                                                  : "<a boundary or load>: <its value>";
+  return fmt::format(": add the load steps, solved in order, e.g. `steps: [{{name: load, increments: 10, set: {{{}}}}}]`; "
+                     "a step ramps each boundary and load of its `set` to the value given, in `increments` equal "
+                     "increments",
+                     set);
+}
+
 void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
-  const DeckNode steps = deck.required("steps");
+  const DeckNode steps = deck.required("steps", steps_fix(m));
   if (!steps.is_sequence() || steps.items().empty()) steps.fail("expected a list of steps");
   for (const auto& node : steps.items()) {
     const Params p = read_params(node, step_spec(), m.units);
@@ -679,7 +742,7 @@ void read_output(const DeckNode& deck, Model& m) {
                              : "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
     for (const char* key : {"part", "node_set", "load", "contact"}) {
       if (h.has(key) && target != key)
-        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, target.empty() ? "no set" : "a " + target));
+        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, target.empty() ? "no set" : with_article(target)));
     }
     if (!target.empty() && !h.has(target))
       h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, target));
@@ -753,50 +816,6 @@ void read_output(const DeckNode& deck, Model& m) {
 }
 
 
-/// (line, column) of the first tab in the indentation of a line up to `last_line` (1-based), or (0, 0).
-std::pair<int, int> indenting_tab(const std::string& text, int last_line) {
-  int line = 1;
-  for (std::size_t start = 0; start < text.size() && line <= last_line; ++line) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    for (std::size_t i = start; i < end && (text[i] == ' ' || text[i] == '\t'); ++i)
-      if (text[i] == '\t') return {line, static_cast<int>(i - start) + 1};
-    start = end + 1;
-  }
-  return {0, 0};
-}
-
-/// (line, column) of the innermost `bracket` (`{` or `[`) still open at the start of line `last_line`
-/// (1-based), outside quotes and comments, or (0, 0). yaml-cpp reports an unclosed flow collection
-/// where it gave up, often lines later.
-std::pair<int, int> open_flow_bracket(const std::string& text, int last_line, char bracket) {
-  std::vector<std::tuple<char, int, int>> open;
-  int line = 1, column = 0;
-  char quote = 0;
-  bool comment = false;
-  for (std::size_t i = 0; i < text.size() && line < last_line; ++i) {
-    const char c = text[i];
-    ++column;
-    if (c == '\n') {
-      ++line;
-      column = 0;
-      comment = false;
-      continue;
-    }
-    if (comment) continue;
-    if (quote) {
-      if (c == quote) quote = 0;
-      continue;
-    }
-    if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t' || text[i - 1] == '\n')) comment = true;
-    else if (c == '"' || c == '\'') quote = c;
-    else if (c == '{' || c == '[') open.emplace_back(c, line, column);
-    else if ((c == '}' || c == ']') && !open.empty()) open.pop_back();
-  }
-  for (auto it = open.rbegin(); it != open.rend(); ++it)
-    if (std::get<0>(*it) == bracket) return {std::get<1>(*it), std::get<2>(*it)};
-  return {0, 0};
-}
-
 }  // namespace
 
 std::vector<ComponentSpec> deck_sections() {
@@ -811,21 +830,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
-    // yaml-cpp says "illegal tab when looking for indentation" or something further off: name the tab.
-    if (const auto tab = indenting_tab(text, line > 0 ? line : INT_MAX);
-        tab.first > 0 && (tab.first == line || e.msg.find("tab") != std::string::npos))
-      throw InputError({file, tab.first, tab.second, ""},
-                       "a tab indents this line, and YAML allows only spaces for indentation: replace the tab with "
-                       "spaces (YAML syntax error: " + e.msg + ")");
-    std::string where_opened;
-    if (e.msg.find("flow not found") != std::string::npos) {
-      const bool map = e.msg.find("map") != std::string::npos;
-      if (const auto open = open_flow_bracket(text, line > 0 ? line + 1 : INT_MAX, map ? '{' : '['); open.first > 0)
-        where_opened = fmt::format(" (the `{}` opened on line {}, column {} is not closed: add the `{}` there)",
-                                   map ? '{' : '[', open.first, open.second, map ? '}' : ']');
-    }
-    throw InputError({file, line, e.mark.is_null() ? 0 : e.mark.column + 1, ""}, "YAML syntax error: " + e.msg + where_opened);
+    throw yaml_syntax_error(e, text, file);
   }
   const DeckNode deck(root, file, "", {file, 1, 1, ""});
   if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");
@@ -835,7 +840,10 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   m.deck_file = file;
   if (deck.has("title")) m.title = deck["title"].as_string();
   {
-    const Params u = read_params(deck.required("units"), units_spec(), m.units);
+    const Params u = read_params(deck.required("units", ": add the deck's unit system, e.g. `units: {length: mm, force: "
+                                                        "N}`: bare numbers are then in mm and N, and stresses and "
+                                                        "pressures in N/mm² = MPa"),
+                                 units_spec(), m.units);
     try {
       m.units = UnitSystem(u.text("length"), "N");
     } catch (const std::invalid_argument& e) {
@@ -849,7 +857,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
                           did_you_mean(u.text("force"), {"N", "mN", "kN", "uN"}));
     }
   }
-  const DeckNode mats = deck.required("materials");
+  const DeckNode mats = deck.required(
+      "materials", ": add the materials the parts name, e.g. `materials: {wall: {type: neo_hookean, mu: 100 kPa}}` (the "
+                   "types and their constants are in the deck reference)");
   if (!mats.is_map() || mats.entries().empty()) mats.fail("expected a map of materials (name: {type: ..., ...})");
   for (const auto& [name, node] : mats.entries()) {
     if (!node.is_map()) node.fail("expected a map with `type` and the model's constants");

@@ -35,13 +35,13 @@ DeckNode DeckNode::operator[](const std::string& key) const {
   return DeckNode(node_[key], file_, p, here);
 }
 
-DeckNode DeckNode::required(const std::string& key) const {
+DeckNode DeckNode::required(const std::string& key, const std::string& fix) const {
   if (!node_.IsMap()) fail("expected a map (key: value entries) containing '" + key + "'");
   DeckNode c = (*this)[key];
   if (!c.yaml().IsDefined()) {
     SourceLocation w = where();
     w.key = c.path();
-    throw InputError(w, "missing required key '" + key + "'");
+    throw InputError(w, "missing required key '" + key + "'" + fix);
   }
   if (c.yaml().IsNull()) c.fail("key '" + key + "' has no value");
   return c;

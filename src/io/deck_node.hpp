@@ -32,8 +32,9 @@ public:
   bool has(const std::string& key) const;
   /// The child at `key` (may be undefined; where() then points at this map).
   DeckNode operator[](const std::string& key) const;
-  /// The child at `key`; error "missing required key" if absent.
-  DeckNode required(const std::string& key) const;
+  /// The child at `key`; error "missing required key '<key>'" if absent, followed by `fix`
+  /// (": add ...", or " (what it is): add ...").
+  DeckNode required(const std::string& key, const std::string& fix = "") const;
   /// Elements of a sequence.
   std::vector<DeckNode> items() const;
   /// (key, value) pairs of a map, in file order.

@@ -123,11 +123,12 @@ void read_solid_part(const DeckNode& node, const Params& p, Part& part, Model& m
     for (int n : local) v.push_back(first + n);
     return v;
   };
-  m.node_sets.push_back({part.name + ".inner", global(g.inner)});
-  m.node_sets.push_back({part.name + ".outer", global(g.outer)});
-  m.node_sets.push_back({part.name + ".bottom", global(g.bottom)});
-  m.node_sets.push_back({part.name + ".top", global(g.top)});
-  m.node_sets.push_back({part.name + ".all", part.nodes});
+  const std::string origin = fmt::format("part '{}' (line {}) as one of its generated sets", part.name, mesh.where().line);
+  m.node_sets.push_back({part.name + ".inner", global(g.inner), origin});
+  m.node_sets.push_back({part.name + ".outer", global(g.outer), origin});
+  m.node_sets.push_back({part.name + ".bottom", global(g.bottom), origin});
+  m.node_sets.push_back({part.name + ".top", global(g.top), origin});
+  m.node_sets.push_back({part.name + ".all", part.nodes, origin});
 }
 
 }  // namespace tunica

@@ -84,11 +84,16 @@ FrameRule read_frame(const DeckNode& node, const Model& m, const Part& part) {
   return f;
 }
 
-void add_set(Model& m, const std::string& name, std::vector<int> nodes, const DeckNode& where) {
-  if (m.find_node_set(name) >= 0) where.fail("node set '" + name + "' is defined twice (by two parts or files)");
+/// Adds the node set `name`, defined by `origin` (NodeSet::origin), unless a set of that name is
+/// defined already.
+void add_set(Model& m, const std::string& name, std::vector<int> nodes, const DeckNode& where, const std::string& origin) {
+  if (const int earlier = m.find_node_set(name); earlier >= 0)
+    where.fail(fmt::format("node set '{}' is defined twice: by {}, and by {}. Rename one of them (a physical group "
+                           "in its mesh file: Physical Curve(\"new name\") in Gmsh)",
+                           printable(name), m.node_sets[earlier].origin, origin));
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  m.node_sets.push_back({name, std::move(nodes)});
+  m.node_sets.push_back({name, std::move(nodes), origin});
 }
 
 /// Blocks of a mesh surface with node numbers mapped to global ones.
@@ -212,7 +217,11 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
       for (const auto& [name, nodes] : sm.node_sets) {
         std::vector<int> g;
         for (int n : nodes) g.push_back(entry.global[n]);
-        add_set(m, name, g, mesh["file"]);
+        const auto group = sm.node_set_origins.find(name);
+        add_set(m, name, g, mesh["file"],
+                fmt::format("{} '{}' of {} (the mesh of part '{}', line {})",
+                            group == sm.node_set_origins.end() ? "a physical group" : group->second, printable(name),
+                            mp.text("file"), part.name, mp.where("file").line));
       }
       entry.mesh = std::move(sm);
       it = cache.files.emplace(key, std::move(entry)).first;
@@ -244,16 +253,19 @@ void read_surface_part(const DeckNode& node, Part& part, Model& m, SurfaceMeshCa
       global[i] = m.num_nodes();
       m.X.push_back(sm.nodes[i]);
     }
+    const std::string generated = fmt::format("part '{}' (line {}) as one of its generated sets", part.name,
+                                              node.where().line);
     for (const auto& [name, nodes] : sm.node_sets) {
       std::vector<int> g;
       for (int n : nodes) g.push_back(global[n]);
-      add_set(m, part.name + "." + name, g, mesh);
+      add_set(m, part.name + "." + name, g, mesh, generated);
     }
     for (const auto& [name, why] : sm.absent_sets) m.absent_node_sets[part.name + "." + name] = why;
     if (const std::string why = check_surface(sm, sm.surfaces.at(0)); !why.empty()) mesh.fail(why);
     add_blocks(sm.surfaces.at(0), global, false, part);
   }
-  add_set(m, part.name + ".all", part.nodes, mesh);
+  add_set(m, part.name + ".all", part.nodes, mesh,
+          fmt::format("part '{}' (line {}) as one of its generated sets", part.name, node.where().line));
 }
 
 void finish_surface_parts(const DeckNode& parts, Model& m) {

@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/article.hpp"
 #include "core/suggest.hpp"
+#include "io/unit_advice.hpp"
 
 namespace tunica {
 
@@ -34,40 +36,12 @@ std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x
   return s;
 }
 
-/// Common units of a dimension, for the nearest to a mistyped one.
-std::vector<std::string> common_units(Dimension dim) {
-  switch (dim) {
-    case Dimension::length: return {"m", "cm", "mm", "um", "nm", "in"};
-    case Dimension::force: return {"N", "mN", "kN", "uN", "dyn", "lbf"};
-    case Dimension::pressure: return {"Pa", "kPa", "MPa", "GPa", "mmHg", "bar", "psi", "atm", "N/mm^2", "N/m^2"};
-    case Dimension::angle: return {"deg", "rad", "degree"};
-    case Dimension::volume: return {"mm^3", "cm^3", "m^3", "ml", "ul"};
-    case Dimension::penalty: return {"N/mm^3", "N/m^3"};
-    case Dimension::moment: return {"N*mm", "N*m"};
-    default: return {};
-  }
-}
-
-/// ", e.g. `0.122 mm`" (the number as written with a unit of `dim`; for a mistyped unit the
-/// nearest common one, else the deck's), or "" for a dimensionless value.
-std::string unit_fix(const std::string& written, const std::string& unit, Dimension dim, const UnitSystem& units) {
-  if (dim == Dimension::dimensionless) return "";
-  const std::size_t at = unit.empty() ? std::string::npos : written.rfind(unit);
-  const std::string number = at == std::string::npos ? written : written.substr(0, at);
-  std::string fix = nearest_name(unit, common_units(dim));
-  if (fix.empty()) fix = dim == Dimension::angle ? "deg" : dim == Dimension::pressure ? "kPa" : units.internal_unit(dim);
-  std::string n = number;
-  while (!n.empty() && (n.back() == ' ' || n.back() == '\t')) n.pop_back();
-  while (!n.empty() && (n.front() == ' ' || n.front() == '\t')) n.erase(0, 1);
-  return ", e.g. `" + n + " " + fix + "`";
-}
-
 /// What a missing key's value looks like: "<a length, e.g. 1 mm>", "<one of: a, b>", ...
 std::string value_placeholder(const ParamSpec& p, const UnitSystem& units) {
   switch (p.type) {
     case ParamType::number:
       return p.dim == Dimension::dimensionless ? "<a number>"
-                                               : fmt::format("<a {} in {}>", dimension_name(p.dim),
+                                               : fmt::format("<{} in {}>", with_article(dimension_name(p.dim)),
                                                              p.dim == Dimension::angle ? "deg" : units.internal_unit(p.dim));
     case ParamType::integer: return "<an integer>";
     case ParamType::boolean: return "<true or false>";
@@ -78,9 +52,19 @@ std::string value_placeholder(const ParamSpec& p, const UnitSystem& units) {
       for (const auto& c : p.choices) list += (list.empty() ? "" : " | ") + c;
       return "<" + list + ">";
     }
-    case ParamType::structured: return "<...>";
+    case ParamType::structured: {
+      const std::string shape = p.choices.empty() ? "" : p.choices.front();  // structured(): its shape
+      return shape == "list" ? "[...]" : shape == "map" ? "{...}" : "<...>";
+    }
   }
   return "<...>";
+}
+
+/// " (<doc>): add `<key>: <placeholder>` to '<map>'", or ": <the key's own fix>".
+std::string missing_fix(const ParamSpec& p, const DeckNode& map, const UnitSystem& units) {
+  if (!p.missing_fix.empty()) return ": " + p.missing_fix;
+  return fmt::format(" ({}): add `{}: {}` to {}", p.doc, p.name, value_placeholder(p, units),
+                     map.path().empty() ? std::string("the deck") : "'" + map.path() + "'");
 }
 
 }  // namespace
@@ -90,24 +74,22 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
   double value = 0;
   std::string unit;
   if (!split_quantity(s, value, unit)) {
-    node.fail(dim == Dimension::dimensionless
-                  ? "expected a number, got '" + s + "'"
-                  : "expected a number with an optional unit (a " + std::string(dimension_name(dim)) +
-                        ", e.g. '" + (dim == Dimension::length     ? "0.122 mm"
-                                      : dim == Dimension::pressure ? "61.163 kPa"
-                                      : dim == Dimension::force    ? "0.1 N"
-                                      : dim == Dimension::penalty  ? "1e4 N/mm^3"
-                                      : dim == Dimension::moment   ? "0.5 N*mm"
-                                                                   : "90 deg") +
-                        "'), got '" + s + "'");
+    if (dim == Dimension::dimensionless) node.fail("expected a number, got '" + s + "'");
+    const char* example = dim == Dimension::length     ? "0.122 mm"
+                          : dim == Dimension::pressure ? "61.163 kPa"
+                          : dim == Dimension::force    ? "0.1 N"
+                          : dim == Dimension::penalty  ? "1e4 N/mm^3"
+                          : dim == Dimension::moment   ? "0.5 N*mm"
+                                                       : "90 deg";
+    node.fail(fmt::format("expected a number with an optional unit ({}, e.g. '{}'), got '{}'",
+                          with_article(dimension_name(dim)), example, s));
   }
   try {
     const double v = units.to_internal(value, unit, dim);
     if (!std::isfinite(v)) node.fail("value '" + s + "' is not finite");
     return v;
   } catch (const std::invalid_argument& e) {
-    node.fail(std::string(e.what()) + " (in '" + s + "'; expected a " + dimension_name(dim) + unit_fix(s, unit, dim, units) +
-              ")");
+    node.fail(unit_advice(s, unit, dim, units, e.what()));
   }
 }
 
@@ -120,7 +102,8 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
   out.set_where(node.where());
   for (const auto& p : spec.params) {
     if (p.type == ParamType::structured) {
-      if (p.required) node.required(p.name);
+      if (p.required && !node.has(p.name)) node.required(p.name, missing_fix(p, node, units));
+      if (p.required) node.required(p.name);  // present: not null
       continue;  // read by the section itself
     }
     const DeckNode given = node[p.name];
@@ -129,13 +112,7 @@ Params read_params(const DeckNode& node, const ComponentSpec& spec, const UnitSy
     if (given.yaml().IsDefined() && given.yaml().IsNull()) given.fail("key '" + p.name + "' has no value");
     const bool missing = !given.yaml().IsDefined();
     if (missing) {
-      if (p.required) {
-        SourceLocation w = node.where();
-        w.key = given.path();
-        throw InputError(w, "missing required key '" + p.name + "' (" + p.doc + "): add `" + p.name + ": " +
-                                value_placeholder(p, units) + "` to " +
-                                (node.path().empty() ? std::string("the deck") : "'" + node.path() + "'"));
-      }
+      if (p.required) node.required(p.name, missing_fix(p, node, units));
       if (p.default_text.empty()) continue;
     }
     // yaml-cpp nodes have reference semantics (assigning to a missing one throws): build anew.

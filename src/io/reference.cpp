@@ -46,8 +46,11 @@ std::string deck_reference_markdown() {
     }
     if (sec.section == "output.history") {
       s += "### History quantities\n\n| quantity | needs | dimension | meaning |\n|---|---|---|---|\n";
+      // fmt::format rather than "`" + std::string(...): GCC 12 warns falsely on a literal + a
+      // temporary string (-Wrestrict, GCC bug 105651).
       for (const auto& q : history_quantities())
-        s += fmt::format("| `{}` | {} | {} | {} |\n", q.name, q.target == QuantityTarget::none ? "–" : "`" + std::string(target_key(q.target)) + "`",
+        s += fmt::format("| `{}` | {} | {} | {} |\n", q.name,
+                         q.target == QuantityTarget::none ? std::string("–") : fmt::format("`{}`", target_key(q.target)),
                          q.dim == Dimension::dimensionless ? "–" : dimension_name(q.dim), q.doc);
       s += "\n";
     }

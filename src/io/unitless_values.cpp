@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace tunica {
 
@@ -32,15 +34,37 @@ bool warn_if_unitless(const DeckNode& v, Dimension dim, Model& m, bool load_targ
   return true;
 }
 
+bool warn_if_gradians(const DeckNode& v, Model& m) {
+  double written = 0;
+  std::string unit;
+  if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || unit.empty() || written == 0) return false;
+  double rad = 0;
+  try {
+    rad = m.units.to_internal(written, unit, Dimension::angle);
+  } catch (const std::invalid_argument&) {
+    return false;  // read_quantity says what is wrong with the unit
+  }
+  const double gradian = std::numbers::pi / 200;
+  if (std::abs(rad - written * gradian) > 1e-9 * std::abs(written * gradian)) return false;
+  m.warnings.push_back(format_location(
+      v.where(), fmt::format("{} is {:.4g} deg: `{}` is the gradian (400 to a turn), not the degree; write `{:g} deg` if "
+                             "degrees are meant",
+                             v.as_string(), rad * 180 / std::numbers::pi, unit, written)));
+  return true;
+}
+
 void warn_unitless_values(const DeckNode& node, const ComponentSpec& spec, Model& m) {
   for (const ParamSpec& p : spec.params) {
     if ((p.dim != Dimension::pressure && p.dim != Dimension::angle) || !node.has(p.name)) continue;
     const DeckNode given = node[p.name];
+    const auto warn = [&](const DeckNode& v) {
+      return warn_if_unitless(v, p.dim, m) || (p.dim == Dimension::angle && warn_if_gradians(v, m));
+    };
     if (given.is_sequence()) {
       for (const DeckNode& v : given.items())
-        if (warn_if_unitless(v, p.dim, m)) break;
+        if (warn(v)) break;
     } else {
-      warn_if_unitless(given, p.dim, m);
+      warn(given);
     }
   }
 }

@@ -425,6 +425,7 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     std::sort(set.begin(), set.end());
     set.erase(std::unique(set.begin(), set.end()), set.end());
     mesh.node_sets[name] = std::move(set);
+    mesh.node_set_origins[name] = fmt::format("physical {} {}", key.first == 0 ? "point" : "curve", key.second);
   }
 
   // Per-element direction-1 vectors from a 3-component element-data view.

@@ -33,6 +33,8 @@ struct SurfaceMesh {
   /// Node sets the generator makes for other parameters but not for these, each with why (a tube
   /// whose sector ends short of 90° has no `x0`): for the message of a deck that names one.
   std::map<std::string, std::string> absent_sets;
+  /// Per node set of a mesh file, the group that defines it ("physical curve 3"); for messages.
+  std::map<std::string, std::string> node_set_origins;
   /// Node tags as written in the mesh file (empty for generated meshes), one per node.
   std::vector<long> node_tags;
 };

@@ -132,6 +132,9 @@ struct Part {
 struct NodeSet {
   std::string name;
   std::vector<int> nodes;
+  /// Where it is defined, for messages: "part 'tube' (line 6) as one of its generated sets",
+  /// "physical curve 3 of wall.msh (the mesh of part 'wall', line 9)", "node_sets.ends (line 12)".
+  std::string origin;
 };
 
 /// Prescribed displacement of some DOFs of a node set; its value is ramped

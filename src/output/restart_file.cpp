@@ -13,7 +13,8 @@ namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 4";
+constexpr const char* kMagic = "tunica-restart 5";
+constexpr const char* kMagicWithoutTrace = "tunica-restart 4";
 constexpr const char* kMagicWithoutFingerprint = "tunica-restart 3";
 constexpr long kMaxFingerprint = 1'000'000;
 constexpr std::size_t kMaxFingerprintText = 4096;  // bytes of one key or value
@@ -135,6 +136,16 @@ std::string restart_text(const RestartRecord& r) {
   put(s, "boundary", c.loads.boundary);
   put(s, "pressure", c.loads.pressure);
   put(s, "volume", c.loads.volume);
+  // The step's converged states the hints of a failure read (solver/step_trace.hpp): their
+  // pressures and volumes, state after state.
+  std::vector<double> trace_pressure, trace_volume;
+  for (const LoadState& t : c.trace.kept()) {
+    trace_pressure.insert(trace_pressure.end(), t.pressure.begin(), t.pressure.end());
+    trace_volume.insert(trace_volume.end(), t.volume.begin(), t.volume.end());
+  }
+  s += fmt::format("trace {} {}\n", c.trace.count(), c.trace.kept().size());
+  put(s, "trace_pressure", trace_pressure);
+  put(s, "trace_volume", trace_volume);
   put(s, "u", std::vector<double>(c.u.data(), c.u.data() + c.u.size()));
   return s + fmt::format("checksum {:08x}\n", crc32_of(s));
 }
@@ -143,12 +154,14 @@ RestartRecord read_restart(const std::string& path) {
   const std::string text = read_file_bounded(path, kMaxRestartBytes, "restart file");
   Reader in(path, text);
   RestartRecord r;
+  bool has_trace = false;
   {
     const std::string first = text.substr(0, text.find('\n'));
     r.has_fingerprint = first != kMagicWithoutFingerprint;
-    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && r.has_fingerprint)
+    has_trace = first == kMagic;
+    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutTrace && r.has_fingerprint)
       in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic +
-              "' and '" + kMagicWithoutFingerprint + "')");
+              "', '" + kMagicWithoutTrace + "' and '" + kMagicWithoutFingerprint + "')");
     if (first.rfind("tunica-restart ", 0) != 0) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
   }
   in.line("tunica-restart");
@@ -184,6 +197,29 @@ RestartRecord read_restart(const std::string& path) {
   c.loads.boundary = in.vector("boundary");
   c.loads.pressure = in.vector("pressure");
   c.loads.volume = in.vector("volume");
+  if (has_trace) {
+    const auto w = in.line("trace");
+    if (w.size() != 2) in.fail("'trace' takes a count of states and the number kept");
+    const long count = in.integer(w[0], 1'000'000'000);
+    const long kept = in.integer(w[1], static_cast<long>(StepTrace::kFirst + StepTrace::kLast));
+    const auto pressure = in.vector("trace_pressure");
+    const auto volume = in.vector("trace_volume");
+    const std::size_t loads = c.loads.pressure.size();
+    if (pressure.size() != kept * loads || volume.size() != kept * loads)
+      in.fail(fmt::format("the trace holds {} pressures and {} volumes for {} states of {} loads", pressure.size(),
+                          volume.size(), kept, loads));
+    std::vector<LoadState> states(kept);
+    for (long k = 0; k < kept; ++k) {
+      states[k].pressure.assign(pressure.begin() + k * loads, pressure.begin() + (k + 1) * loads);
+      states[k].volume.assign(volume.begin() + k * loads, volume.begin() + (k + 1) * loads);
+      states[k].step = c.step;
+    }
+    try {
+      c.trace = StepTrace::recorded(std::move(states), count);
+    } catch (const std::invalid_argument& e) {
+      in.fail(e.what());
+    }
+  }
   const auto u = in.vector("u");
   c.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
   if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");

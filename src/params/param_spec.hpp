@@ -28,6 +28,9 @@ struct ParamSpec {
   std::vector<std::string> choices;     ///< allowed values of a text parameter
   int count = 0;                        ///< required length of a numbers list (0 = any)
   std::string doc;
+  /// The fix a message for the missing key gives, e.g. "add the part's geometry, e.g. `mesh:
+  /// {...}`" ("": one built from the type, the unit and the doc). For messages only.
+  std::string missing_fix;
 };
 
 /// A component's declaration: the key under which decks select it and its parameters.

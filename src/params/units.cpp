@@ -2,6 +2,8 @@
 
 #include <udunits2.h>
 
+#include "core/article.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -64,7 +66,7 @@ double convert(double value, const std::string& from, const std::string& to, con
   }
   UnitPtr a = parse_unit(from), b = parse_unit(to);
   cv_converter* cv = ut_get_converter(a.get(), b.get());
-  if (!cv) throw std::invalid_argument("unit '" + from + "' is not a " + what);
+  if (!cv) throw std::invalid_argument("unit '" + from + "' is not " + with_article(what));
   const double r = cv_convert_double(cv, value);
   {
     std::lock_guard<std::mutex> lock(m);
@@ -143,6 +145,15 @@ double UnitSystem::to_internal(double value, const std::string& unit, Dimension 
 double UnitSystem::from_internal(double value, const std::string& unit, Dimension d) const {
   if (unit.empty()) return value;
   return convert(value, internal_unit(d), unit, dimension_name(d));
+}
+
+bool is_unit(const std::string& text) {
+  try {
+    parse_unit(text);
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string& unit) {

@@ -41,6 +41,9 @@ private:
   std::string length_, force_;
 };
 
+/// True if UDUNITS-2 knows `text` as a unit (of any dimension).
+bool is_unit(const std::string& text);
+
 /// Suffix naming a unit in a column or array name: "_mm", "_kPa", "_N_per_mm2" for the
 /// internal pressure unit of an mm–N system; "" for dimensionless quantities.
 std::string unit_suffix(const UnitSystem& units, Dimension d, const std::string& unit = "");

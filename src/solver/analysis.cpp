@@ -48,6 +48,7 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     state_.dt = 0;
     state_.increment = 0;
     state_.reduced_successes = 0;
+    state_.trace = StepTrace();
   }
 }
 
@@ -76,7 +77,9 @@ void Analysis::run_step(AnalysisObserver& observer) {
   };
 
   auto solver = solver_factory_(step.solver.linear_solver);
-  std::vector<LoadState> converged = {state_.loads};  // for the hints of a failure (failure_hints.hpp)
+  // The hints of a failure (failure_hints.hpp) read the step's converged states, kept in the
+  // checkpoint: a step resumed from a restart file continues its trace (an older file has none).
+  if (state_.trace.count() == 0) state_.trace.restart_at(state_.loads);
   const double nominal = 1.0 / step.increments;
   double t = state_.fraction;
   double dt = state_.dt > 0 ? state_.dt : nominal;
@@ -112,7 +115,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
         state_.u = u;
         state_.loads = trial;
         update_volumes();
-        converged.push_back(state_.loads);
+        state_.trace.push(state_.loads);
         info.iterations = r.iterations;
         break;
       }
@@ -131,7 +134,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
             "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
             "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
             info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
-            failure_hints(model_, step, r, converged, trial) +
+            failure_hints(model_, step, r, state_.trace, trial) +
                 contact_resolution_hints(system_, state_.u, s)));
       }
       observer.on_cutback(info, why);

@@ -12,6 +12,7 @@
 
 #include "assembly/system.hpp"
 #include "solver/increment.hpp"
+#include "solver/step_trace.hpp"
 
 namespace tunica {
 
@@ -35,6 +36,7 @@ struct Checkpoint {
   LoadState step_start;      ///< amplitudes at the start of the step
   LoadState loads;           ///< current amplitudes
   Eigen::VectorXd u;         ///< current displacements
+  StepTrace trace;           ///< the step's converged states that the hints of a failure read
 };
 
 class Analysis;

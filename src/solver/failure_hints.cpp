@@ -7,8 +7,8 @@
 
 namespace tunica {
 
-std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
-                          const std::vector<LoadState>& converged, const LoadState& attempted) {
+std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
+                          const LoadState& attempted) {
   std::string hints;
   const auto add = [&](const std::string& h) { hints += " Hint: " + h; };
   // Still converging: the relative residual small, and the absolute one falling and small against
@@ -20,21 +20,20 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
                     "raise `max_iterations` in `solver` (now {}).",
                     last.last_relative_residual, step.solver.max_iterations));
   // A pressure the step raises, under pressure control, whose p–V curve flattens: theory manual §7.1.
-  if (step.volume_control.load < 0 && converged.size() >= 3) {
+  if (step.volume_control.load < 0 && converged.count() >= 3) {
     const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
     const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
     for (std::size_t l = 0; l < model.loads.size(); ++l) {
       const auto target = step.targets.find(model.loads[l].name);
-      const LoadState& a = converged.front();
+      const LoadState& a = converged.first(0);
       if (target == step.targets.end() || std::abs(target->second) <= std::abs(a.pressure[l])) continue;
       const auto slope = [&](const LoadState& x, const LoadState& y) {
         const double dV = y.volume[l] - x.volume[l];
         return dV != 0 ? (y.pressure[l] - x.pressure[l]) / dV : 0.0;
       };
-      const std::size_t n = converged.size();
-      const LoadState& end = converged.back();
-      const double first = slope(converged[0], converged[1]);
-      const double now = slope(converged[n - 2], end);
+      const LoadState& end = converged.last(0);
+      const double first = slope(converged.first(0), converged.first(1));
+      const double now = slope(converged.last(1), end);
       if (first == 0 || now / first >= 0.2) continue;
       // Where the curve's trend puts its maximum (7.9): dp/dV linear in V through the slopes of
       // the last two increments, p* = p + ∫ dp/dV dV up to its zero. None in sight (±∞) while
@@ -43,15 +42,15 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       double peak = sense * std::numeric_limits<double>::infinity();
       if (now / first <= 0) {
         peak = end.pressure[l];
-      } else if (n >= 4) {
-        const double before = slope(converged[n - 3], converged[n - 2]);
-        const double v_now = 0.5 * (converged[n - 2].volume[l] + end.volume[l]);
-        const double v_before = 0.5 * (converged[n - 3].volume[l] + converged[n - 2].volume[l]);
+      } else if (converged.count() >= 4) {
+        const double before = slope(converged.last(2), converged.last(1));
+        const double v_now = 0.5 * (converged.last(1).volume[l] + end.volume[l]);
+        const double v_before = 0.5 * (converged.last(2).volume[l] + converged.last(1).volume[l]);
         const double bend = v_now != v_before ? (now - before) / (v_now - v_before) : 0.0;  // d²p/dV²
         if (bend * now < 0 && std::abs(now - before) > 1e-9 * std::abs(before)) {  // falling beyond round-off
           const double v_peak = v_now - now / bend;
           const double ahead = v_peak - end.volume[l];  // the volume still to go, along the way V moves
-          const double moving = end.volume[l] - converged[n - 2].volume[l];
+          const double moving = end.volume[l] - converged.last(1).volume[l];
           peak = ahead * moving <= 0 ? end.pressure[l]
                                      : end.pressure[l] + 0.5 * (now + bend * (end.volume[l] - v_now)) * ahead;
         }
@@ -71,12 +70,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
             std::isfinite(peak) ? fmt::format("its trend puts a maximum near {:.4g} kPa, above the {:.4g} kPa the failed "
                                               "increment tried", kpa(peak), kpa(tried))
                                 : "its trend shows no maximum";
+        // Where to look: the last ParaView frame shows the state the run stopped at, if frames are written.
+        const std::string look =
+            model.output.vtk ? "look at newton.csv (active_changes) and the last frame where the residual sits, e.g. at "
+                               "contact"
+                             : "look at newton.csv (active_changes) and history.csv for where the residual sits, e.g. "
+                               "at contact (no ParaView frames were written, `output.vtk` is false: set it to true to "
+                               "see the last converged state)";
         add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
                         "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. "
                         "The failure is likely not a limit point of the pressure but a local one, which "
-                        "`volume_control` need not pass: look at newton.csv (active_changes) and the last frame "
-                        "where the residual sits, e.g. at contact (user guide §6).",
-                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend));
+                        "`volume_control` need not pass: {} (user guide §6).",
+                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend,
+                        look));
       }
     }
   }

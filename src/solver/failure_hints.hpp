@@ -6,6 +6,7 @@
 
 #include "assembly/system.hpp"
 #include "solver/newton.hpp"
+#include "solver/step_trace.hpp"
 
 namespace tunica {
 
@@ -19,10 +20,10 @@ namespace tunica {
 ///    the maximum that the curve's trend predicts (theory manual (7.9); the maximum passed when
 ///    dp/dV has changed sign), a limit point, which `volume_control` passes; otherwise the
 ///    pressure still rises there, and the hint says so rather than suggest volume control.
-/// `converged`: the step's start and each converged increment's state, in order; `attempted`:
-/// the loads of the failed increment.
-std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
-                          const std::vector<LoadState>& converged, const LoadState& attempted);
+/// `converged`: the step's start and its converged increments' states (also those before a
+/// restart); `attempted`: the loads of the failed increment.
+std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
+                          const LoadState& attempted);
 
 /// The slave nodes of a deformable contact pair that are active at u, next to each other on the
 /// slave chain, lie this many master segments apart on average (or more): the slave is the

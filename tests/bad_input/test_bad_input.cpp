@@ -34,12 +34,6 @@ void expect_error(const std::string& name, const std::string& from, const std::s
   EXPECT_EQ(o.output.find("terminate called"), std::string::npos) << o.output;
 }
 
-/// `pattern` with each "{}" replaced by the line of the next of `needles` in `text`.
-std::string fmt_lines(std::string pattern, const std::string& text, const std::vector<std::string>& needles) {
-  for (const std::string& n : needles) pattern.replace(pattern.find("{}"), 2, std::to_string(line_of(text, n)));
-  return pattern;
-}
-
 }  // namespace
 
 TEST(BadInput, TheExampleItselfIsValid) {
@@ -81,6 +75,14 @@ TEST(BadInput, MissingSection) {
   const Outcome o = run_cli("check " + write_deck("missing-steps", cut));
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.output.find("key 'steps': missing required key 'steps'"), std::string::npos) << o.output;
+}
+
+TEST(BadInput, AnAngleInAUnitOfAnotherDimensionSaysAnAngle) {
+  const std::string hgo = "type: hgo, mu: 30 kPa, k1: 100 kPa, k2: 5, beta: 40 mm, kappa: 0.1}";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("  aorta:")) + "  aorta: {" + hgo + "\n" + text.substr(text.find("\nparts:"));
+  expect_check_error(kScratch, "angle-in-mm", deck, "beta: 40 mm", "materials.aorta.beta",
+                     "unit 'mm' is not an angle (in '40 mm'; expected an angle, e.g. `40 deg`)");
 }
 
 TEST(BadInput, WrongTypeNumber) {

@@ -12,17 +12,12 @@
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
+#include "../support/scratch.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("tunica-bad-meshes-" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 /// A Gmsh 2.2 mesh: nodes 1–5 ((0,0), (1,0), (1,1), (0,1), (2,0) in z = 0), the given
 /// triangles on physical surface 1 "wall", and physical curve 10 "edge" (line 1–2).
@@ -56,8 +51,7 @@ steps:
 /// exit 2 and one line holding the key and `what`.
 void expect_error(const std::string& name, const std::string& mesh, const std::string& from, const std::string& to,
                   const std::string& key, const std::string& what) {
-  const fs::path dir = scratch() / name;
-  fs::create_directories(dir);
+  const fs::path dir = scratch("bad-meshes", name);
   std::ofstream(dir / "square.msh") << mesh;
   const std::string deck_text = from.empty() ? std::string(kDeck) : replace(kDeck, from, to);
   std::ofstream(dir / "deck.yaml") << deck_text;
@@ -72,8 +66,7 @@ void expect_error(const std::string& name, const std::string& mesh, const std::s
 }  // namespace
 
 TEST(BadMeshes, TheGoodSquareIsValid) {
-  const fs::path dir = scratch() / "good";
-  fs::create_directories(dir);
+  const fs::path dir = scratch("bad-meshes", "good");
   std::ofstream(dir / "square.msh") << msh(kGood, 2);
   std::ofstream(dir / "deck.yaml") << kDeck;
   const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
@@ -129,10 +122,8 @@ TEST(BadMeshes, VolumeControlOfAnUndefinedLoad) {
 }
 
 TEST(BadMeshes, ADeckNamingAScriptIsRefusedUnlessScriptsAreAllowed) {
-  const fs::path dir = scratch() / "script";
-  fs::create_directories(dir);
+  const fs::path dir = scratch("bad-meshes", "script");
   const fs::path marker = dir / "script-ran";
-  fs::remove(marker);
   // The square as a script that also runs a command.
   std::ofstream(dir / "square.geo") << "System \"touch " << marker.string() << "\";\n"
                                     << "Point(1) = {0, 0, 0, 1}; Point(2) = {1, 0, 0, 1}; Point(3) = {1, 1, 0, 1};\n"
@@ -172,8 +163,7 @@ TEST(BadMeshes, ADeviceOrAHugeHeaderIsRefusedAtOnce) {
   EXPECT_EQ(o.exit_code, 2) << o.output;
   EXPECT_NE(o.output.find("/dev/zero: cannot read the deck: it is not a regular file"), std::string::npos) << o.output;
   // A mesh whose header announces 10^9 nodes.
-  const fs::path dir = scratch() / "huge";
-  fs::create_directories(dir);
+  const fs::path dir = scratch("bad-meshes", "huge");
   std::ofstream(dir / "square.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1000000000 1 1000000000\n";
   std::ofstream(dir / "deck.yaml") << kDeck;
   o = run_cli("check " + (dir / "deck.yaml").string());
@@ -189,8 +179,7 @@ TEST(BadMeshes, ADeviceOrAHugeHeaderIsRefusedAtOnce) {
 }
 
 TEST(BadMeshes, TunicaMeshRefusesWhatIsNotAScriptOrNotAMeshFileAndBadResults) {
-  const fs::path dir = scratch() / "mesh-command";
-  fs::create_directories(dir);
+  const fs::path dir = scratch("bad-meshes", "mesh-command");
   std::ofstream(dir / "square.msh") << msh(kGood, 2);
   Outcome o = run_cli("mesh " + (dir / "square.msh").string() + " -o " + (dir / "out.msh").string());
   EXPECT_EQ(o.exit_code, 2) << o.output;
@@ -224,8 +213,7 @@ TEST(BadMeshes, TunicaMeshRefusesWhatIsNotAScriptOrNotAMeshFileAndBadResults) {
 }
 
 TEST(BadMeshes, TerminatingTunicaMeshEndsGmshAndLeavesNoTemporaryFolder) {
-  const fs::path dir = scratch() / "mesh-sigterm";
-  fs::remove_all(dir);
+  const fs::path dir = scratch("bad-meshes", "mesh-sigterm");
   fs::create_directories(dir / "tmp");
   const fs::path marker = dir / "still-running";
   std::ofstream(dir / "slow.geo") << "System \"sleep 3; touch " << marker.string() << "\";\nPoint(1) = {0, 0, 0};\n";
@@ -253,8 +241,7 @@ TEST(BadMeshes, NodeSetsOfOneNameFromTwoPhysicalGroupsAreRefused) {
 TEST(BadMeshes, AFoldedQuadrilateralIsNamedByTheMeshFileAndItsTags) {
   // A quadrilateral of the shipped quarter cylinder (4.1 binary) with a node moved by a
   // corrupted byte: it passes the surface checks and is folded at a Gauss point.
-  const fs::path dir = scratch() / "folded";
-  fs::create_directories(dir);
+  const fs::path dir = scratch("bad-meshes", "folded");
   fs::copy_file(fs::path(TUNICA_SOURCE_DIR) / "tests/data/bad-meshes/folded-quad-v41-binary.msh", dir / "square.msh",
                 fs::copy_options::overwrite_existing);
   std::ofstream(dir / "deck.yaml") << kDeck;
@@ -272,7 +259,7 @@ TEST(BadMeshes, ControlCharactersFromAMeshNeverReachTheTerminal) {
   std::string mesh = msh(kGood, 2);
   mesh = replace(mesh, "1 10 \"edge\"", "1 10 \"ed\x1b[31mge\"");
   expect_error("control-name", mesh, "", "", "boundary.fixed.node_set", "undefined node set 'edge'");
-  const fs::path dir = scratch() / "control-name";
+  const fs::path dir = scratch("bad-meshes") / "control-name";
   const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
   EXPECT_EQ(o.output.find('\x1b'), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("ed\\x1B[31mge"), std::string::npos) << o.output;

@@ -94,6 +94,24 @@ TEST(MessageClasses, TabInTheIndentation) {
   EXPECT_SAYS(o, "tab.yaml:" + std::to_string(line_of(read_text(kExample), "    a1: 0.68238")) + ":1:");
 }
 
+TEST(MessageClasses, AClosingBracketOfTheWrongKindSaysWhichClosesThere) {
+  // yaml-cpp says only "illegal flow end".
+  const std::string text = read_text(kExample);
+  const Outcome o = expect_deck_message(
+      "flow-end", "base:    {node_set: wall.start, dofs: [z]}", "base:    {node_set: wall.start, dofs: [z}",
+      "dofs: [z}", "", "YAML syntax error: illegal flow end: this `}` would close the `[` opened on line " +
+                           std::to_string(line_of(text, "dofs: [z]")) + ", column 41, which only `]` closes",
+      "write `]` before this `}` (`[z]}`), or `]` instead of it");
+  EXPECT_SAYS(o, "flow-end.yaml:" + std::to_string(line_of(text, "dofs: [z]")) + ":43:");
+}
+
+TEST(MessageClasses, AClosingBracketThatClosesNothingSaysSo) {
+  expect_deck_message("flow-end-stray", "solver: {residual_tolerance: 1e-10}", "solver: {residual_tolerance: 1e-10}}",
+                      "solver: {residual", "", "YAML syntax error: illegal flow end: this `}` closes no `{`, since none "
+                      "is open here",
+                      "Remove it, or add the `{` where the map begins; a value that holds a `}` is written in quotes");
+}
+
 TEST(MessageClasses, UnknownKeyListsTheAllowedOnesAndTheNearest) {
   expect_deck_message("unknown-key", "    thickness: 0.122 mm", "    tickness: 0.122 mm", "tickness:",
                       "parts.wall.tickness", "unknown key 'tickness' (allowed here: element, material, thickness,",
@@ -107,6 +125,39 @@ TEST(MessageClasses, MissingRequiredKeySaysWhatToAdd) {
                       "add `thickness: <a length in mm>` to 'parts.wall'");
 }
 
+/// The text between the first "e.g. `" after `from` in `output` and the closing "`".
+std::string example_after(const std::string& output, const std::string& from) {
+  const std::size_t at = output.find("e.g. `", output.find(from));
+  if (at == std::string::npos) return "";
+  const std::size_t end = output.find('`', at + 6);
+  return end == std::string::npos ? "" : output.substr(at + 6, end - at - 6);
+}
+
+TEST(MessageClasses, MissingSectionOrMeshGivesAnExampleThatWorks) {
+  // Without `units`, `steps` or a part's `mesh`, the message gives an example of the key to add;
+  // added as given, the deck is valid.
+  const std::string text = read_text(kExample);
+  struct Case {
+    std::string name, cut, key, insert_before, indent;
+  };
+  const std::string steps = text.substr(text.find("steps:"), text.find("output:") - text.find("steps:"));
+  for (const Case& c : {Case{"no-units", "units: {length: mm, force: N}\n", "units", "\nmaterials:", ""},
+                        Case{"no-steps", steps, "steps", "output:", ""},
+                        Case{"no-mesh", "    mesh: {type: line, from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm], elements: 1}\n",
+                             "parts.wall.mesh", "\nboundary:", "    "}}) {
+    const std::string cut = replace(text, c.cut, "");
+    const std::string path = write_deck_file(kScratch, c.name, cut);
+    const Outcome o = run_cli("check " + path);
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_SAYS(o, "key '" + c.key + "': missing required key '" + c.key.substr(c.key.rfind('.') + 1) + "': add ");
+    const std::string example = example_after(o.output, "missing required key");
+    ASSERT_FALSE(example.empty()) << o.output;
+    const std::string fixed = replace(cut, c.insert_before, "\n" + c.indent + example + "\n" + c.insert_before);
+    const Outcome again = run_cli("check " + write_deck_file(kScratch, c.name + "-fixed", fixed));
+    EXPECT_EQ(again.exit_code, 0) << example << "\n" << again.output;
+  }
+}
+
 // ---------------------------------------------------------------- values and units
 
 TEST(MessageClasses, UnitOfTheWrongDimensionGivesOneOfTheRightOne) {
@@ -117,6 +168,40 @@ TEST(MessageClasses, UnitOfTheWrongDimensionGivesOneOfTheRightOne) {
 TEST(MessageClasses, MistypedUnitGetsTheNearestUnit) {
   expect_deck_message("unknown-unit", "c: 61.163 kPa", "c: 61.163 kPaa", "c: 61.163 kPaa", "materials.aorta.c",
                       "unknown unit 'kPaa'", "e.g. `61.163 kPa`");
+}
+
+TEST(MessageClasses, AWordAfterTheUnitIsNamedAndTheUnitBeforeItProposed) {
+  // UDUNITS-2 reads "kPa abs" as kPa × abs: the word it does not know is named, and the fix is
+  // the unit before it, not the nearest unit to "kPa abs" by spelling.
+  const Outcome o = expect_deck_message("unit-word", "c: 61.163 kPa", "c: 61.163 kPa abs", "c: 61.163 kPa abs",
+                                        "materials.aorta.c", "unit 'kPa abs' is not understood (in '61.163 kPa abs'): "
+                                        "'abs' is not a unit",
+                                        "'kPa' alone is a pressure (stress): write `61.163 kPa`");
+  EXPECT_EQ(o.output.find("e.g."), std::string::npos) << o.output;
+}
+
+TEST(MessageClasses, GradIsRefusedWithDegreesAndGradiansAsTheFix) {
+  // "grad" is the degree in German and the gradian in French; UDUNITS-2 knows neither by that
+  // name, and the nearest unit by spelling, rad, is neither.
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 40 grad\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  const Outcome o = expect_check_error(kScratch, "grad", deck, "beta: 40 grad", "materials.aorta.beta",
+                                       "unknown unit 'grad' (in '40 grad'; expected an angle)");
+  EXPECT_SAYS(o, "for degrees write `40 deg`, for gradians (400 to a turn) `40 grade`");
+  EXPECT_EQ(o.output.find("40 rad"), std::string::npos) << o.output;
+}
+
+TEST(MessageClasses, AnAngleInGradiansIsReadWithAWarning) {
+  const std::string hgo = "    type: hgo\n    mu: 30 kPa\n    k1: 100 kPa\n    k2: 5\n    beta: 40 grade\n    kappa: 0.1";
+  const std::string text = read_text(kExample);
+  const std::string deck = text.substr(0, text.find("    type: fung")) + hgo + "\n" + text.substr(text.find("\nparts:"));
+  const std::string path = write_deck_file(kScratch, "grade", deck);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_SAYS(o, "tunica: warning: " + path + ":" + std::to_string(line_of(deck, "beta: 40 grade")) +
+                     ":11: key 'materials.aorta.beta': 40 grade is 36 deg: `grade` is the gradian (400 to a turn), not "
+                     "the degree; write `40 deg` if degrees are meant");
 }
 
 TEST(MessageClasses, OutOfRangeIsEchoedInTheUnitTyped) {
@@ -224,6 +309,68 @@ TEST(MessageClasses, UndefinedContactPairListsThePairs) {
   const Outcome o = expect_check_error(kScratch, "undefined-contact", bad, "contact: wall_sleve}", "output.history[8].contact",
                                        "undefined contact pair 'wall_sleve' (the contact pairs are: wall_sleeve");
   EXPECT_SAYS(o, "did you mean 'wall_sleeve'?");
+}
+
+TEST(MessageClasses, ADofHeldByTwoBoundariesNamesTheNodeTheDofAndBothBoundaries) {
+  const std::string text = replace(read_text(kExample), "  stretch: {node_set: wall.end, dofs: [z]}",
+                                   "  stretch: {node_set: wall.end, dofs: [z]}\n  clamp: {node_set: wall.all, dofs: [z]}");
+  const Outcome o = expect_check_error(
+      kScratch, "dof-twice", text, "clamp:", "boundary.clamp",
+      fmt_lines("boundary 'clamp' (line {}, node set 'wall.all') and boundary 'base' (line {}, node set 'wall.start') "
+                "both prescribe z of node 0 of part 'wall'",
+                text, {"clamp:", "base:"}));
+  EXPECT_SAYS(o, "a DOF takes one prescribed value. Remove 'z' from the `dofs` of one of them, or give one a node set "
+                 "without the shared node");
+}
+
+TEST(MessageClasses, ADofHeldTwiceNamesTheNodeByItsTagInTheMeshFile) {
+  // The square's physical curve `edge` (nodes 11, 12) held in x, y, z, and the whole surface in z.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "dof-twice-mesh";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << square_msh();
+  const std::string deck = replace(kMeshDeck, "  fixed: {node_set: edge, dofs: [x, y, z]}",
+                                   "  fixed: {node_set: edge, dofs: [x, y, z]}\n  flat: {node_set: wall.all, dofs: [z]}");
+  std::ofstream(dir / "deck.yaml") << deck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, fmt_lines((dir / "deck.yaml").string() + ":{}:", deck, {"flat:"}));
+  EXPECT_SAYS(o, fmt_lines("boundary 'flat' (line {}, node set 'wall.all') and boundary 'fixed' (line {}, node set 'edge') "
+                           "both prescribe z of node 11 of square.msh (and 1 more node(s) of both sets)",
+                           deck, {"flat:", "fixed:"}));
+}
+
+TEST(MessageClasses, ADofListedTwiceInOneBoundaryIsRefused) {
+  expect_deck_message("dof-listed-twice", "base:    {node_set: wall.start, dofs: [z]}",
+                      "base:    {node_set: wall.start, dofs: [z, z]}", "dofs: [z, z]", "boundary.base.dofs[1]",
+                      "DOF 'z' is listed twice in `dofs`: list each DOF once", "(or write the one meant; not listed: r)");
+}
+
+TEST(MessageClasses, ANodeSetDefinedTwiceNamesBothDefinitions) {
+  // The deck's own set and the one every axisymmetric part gets.
+  const std::string text = replace(read_text(kExample), "\nboundary:", "\nnode_sets:\n  wall.end: {part: wall, nodes: [0]}\n\nboundary:");
+  expect_check_error(kScratch, "set-twice", text, "wall.end: {part", "node_sets.wall.end",
+                     fmt_lines("node set 'wall.end' is already defined, by part 'wall' (line {}) as one of its generated "
+                               "sets: give this one another name (here and where the deck names it)",
+                               text, {"    element: axisymmetric_membrane"}));
+  // The deck's set and a physical group of the mesh file.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "set-twice-mesh";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << square_msh();
+  const std::string deck = replace(kMeshDeck, "\nboundary:", "\nnode_sets:\n  edge: {part: wall, nodes: all}\nboundary:");
+  std::ofstream(dir / "deck.yaml") << deck;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, fmt_lines("node set 'edge' is already defined, by physical curve 10 'edge' of square.msh (the mesh of "
+                           "part 'wall', line {}): give this one another name",
+                           deck, {"mesh: {type: gmsh"}));
+  // A physical group named like a set the part gets.
+  std::string mesh = square_msh();
+  mesh = replace(mesh, "1 10 \"edge\"", "1 10 \"wall.all\"");
+  const MeshCase c = check_mesh("set-twice-group", mesh);
+  EXPECT_SAYS(c.o, fmt_lines("node set 'wall.all' is defined twice: by physical curve 10 'wall.all' of square.msh (the "
+                             "mesh of part 'wall', line {}), and by part 'wall' (line {}) as one of its generated sets. "
+                             "Rename one of them",
+                             kMeshDeck, {"mesh: {type: gmsh", "    element: membrane"}));
 }
 
 TEST(MessageClasses, NodeNumberOutsideThePartGivesTheNumberAndTheRange) {

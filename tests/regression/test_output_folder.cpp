@@ -19,6 +19,7 @@
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
+#include "../support/scratch.hpp"
 #include "../support/vtu.hpp"
 #include "model/model.hpp"
 
@@ -28,13 +29,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kExample = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
-
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("tunica-folder-" + std::to_string(getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 /// The rat aorta example (1 element, prestretch 6 increments then inflation 20) with a small
 /// revolved surface and the given extra output keys; `one_step` keeps the prestretch only.
@@ -83,7 +77,7 @@ void flip_byte(const fs::path& file, long at) {
 }  // namespace
 
 TEST(OutputFolder, ARunIntoALockedFolderIsRefusedAndWritesNothing) {
-  const fs::path dir = scratch("locked");
+  const fs::path dir = scratch("folder", "locked");
   const fs::path out = dir / "out";
   fs::create_directories(out);
   const int fd = open((out / ".tunica.lock").c_str(), O_RDWR | O_CREAT, 0644);
@@ -101,7 +95,7 @@ TEST(OutputFolder, ARunIntoALockedFolderIsRefusedAndWritesNothing) {
 }
 
 TEST(OutputFolder, TwoRunsStartedTogetherIntoOneFolderNeverMix) {
-  const fs::path dir = scratch("together");
+  const fs::path dir = scratch("folder", "together");
   const std::string d = deck(dir, "d.yaml", "", /*one_step=*/true);
   ASSERT_EQ(run_cli("run " + run_quiet(d, dir / "alone")).exit_code, 0);
   const std::set<std::string> alone = files_in(dir / "alone");
@@ -143,7 +137,7 @@ TEST(OutputFolder, TwoRunsStartedTogetherIntoOneFolderNeverMix) {
 }
 
 TEST(OutputFolder, AFreshRunRemovesTheFramesOfAnEarlierRunAndOnlyTunicasFiles) {
-  const fs::path dir = scratch("stale");
+  const fs::path dir = scratch("folder", "stale");
   ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "long.yaml", ""), dir / "out")).exit_code, 0);
   ASSERT_TRUE(fs::exists(dir / "out" / "vtk" / "surface_000026.vtu"));
   std::ofstream(dir / "out" / "notes.txt") << "mine\n";
@@ -165,7 +159,7 @@ TEST(OutputFolder, AFreshRunRemovesTheFramesOfAnEarlierRunAndOnlyTunicasFiles) {
 class DamagedFolder : public testing::Test {
 protected:
   void SetUp() override {
-    dir_ = scratch(testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = scratch("folder", testing::UnitTest::GetInstance()->current_test_info()->name());
     full_ = deck(dir_, "full.yaml", "");
     ASSERT_EQ(run_cli("run " + run_quiet(full_, dir_ / "full")).exit_code, 0);
     ASSERT_EQ(run_cli("run " + run_quiet(deck(dir_, "one.yaml", "", true), out())).exit_code, 0);
@@ -236,7 +230,7 @@ TEST_F(DamagedFolder, ATornTailIsCutAndTheRunContinuesBitForBit) {
 }
 
 TEST(OutputFolder, VtkEveryWritesEveryNthIncrementAndTheEndOfEachStep) {
-  const fs::path dir = scratch("every");
+  const fs::path dir = scratch("folder", "every");
   ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "d.yaml", "  vtk_every: 4\n"), dir / "out")).exit_code, 0);
   // Reference state; prestretch (6 increments): 4, 6; inflation (20): 4, 8, 12, 16, 20.
   const std::string pvd = read_text((dir / "out" / "surface.pvd").string());
@@ -252,7 +246,7 @@ TEST(OutputFolder, VtkEveryWritesEveryNthIncrementAndTheEndOfEachStep) {
 }
 
 TEST(OutputFolder, EveryVtkFormatDecodesToTheSameValues) {
-  const fs::path dir = scratch("formats");
+  const fs::path dir = scratch("folder", "formats");
   for (const char* f : {"ascii", "binary", "compressed"}) {
     const std::string keys = std::string("  vtk_every: 100\n  vtk_format: ") + f + "\n";
     ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, std::string(f) + ".yaml", keys), dir / f)).exit_code, 0);
@@ -310,7 +304,7 @@ std::vector<std::string> float_arrays(const std::string& vtu) {
 }  // namespace
 
 TEST(OutputFolder, VtkFieldsSelectTheArraysOfEachFrame) {
-  const fs::path dir = scratch("fields");
+  const fs::path dir = scratch("folder", "fields");
   // Every array the writer writes is a name of vtk_field_names with its unit suffix (and the
   // contact pressure, which only models with contact have): the list the deck checks against.
   ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "all.yaml", "  vtk_every: 100\n"), dir / "all")).exit_code, 0);
@@ -355,7 +349,7 @@ TEST(OutputFolder, VtkFieldsSelectTheArraysOfEachFrame) {
 }
 
 TEST(OutputFolder, VtkFieldsOfA3dModelAndTheUserGuidesList) {
-  const fs::path dir = scratch("fields3d");
+  const fs::path dir = scratch("folder", "fields3d");
   std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere-3d.yaml");
   ASSERT_NE(text.find("output:\n"), std::string::npos);
   const std::string all_deck = (dir / "all.yaml").string(), some_deck = (dir / "some.yaml").string();
@@ -383,7 +377,7 @@ TEST(OutputFolder, VtkFieldsOfA3dModelAndTheUserGuidesList) {
 }
 
 TEST(OutputFolder, WithoutFramesThereIsNoVtkFolder) {
-  const fs::path dir = scratch("no-vtk");
+  const fs::path dir = scratch("folder", "no-vtk");
   ASSERT_EQ(run_cli("run " + run_quiet(deck(dir, "d.yaml", "  vtk: false\n", /*one_step=*/true), dir / "out")).exit_code, 0);
   EXPECT_TRUE(fs::exists(dir / "out" / "history.csv"));
   EXPECT_FALSE(fs::exists(dir / "out" / "vtk"));

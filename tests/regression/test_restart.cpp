@@ -14,6 +14,9 @@
 #include <thread>
 
 #include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
+#include "../support/scratch.hpp"
 #include "../support/shell_decks.hpp"
 
 using namespace tunica::test;
@@ -21,12 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("tunica-restart-" + std::to_string(getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 /// A long run of the balloon example: 300 increments (20 elements, small ParaView frames).
 std::string long_deck(const fs::path& dir) {
@@ -101,7 +98,7 @@ std::vector<std::string> rows_without_timing(const std::string& csv) {
 }  // namespace
 
 TEST(Restart, KilledRunLeavesCompleteFilesAndTheRestartReproducesTheUninterruptedRun) {
-  const fs::path dir = scratch("kill");
+  const fs::path dir = scratch("restart", "kill");
   const std::string deck = long_deck(dir);
   ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
 
@@ -122,7 +119,7 @@ TEST(Restart, KilledRunLeavesCompleteFilesAndTheRestartReproducesTheUninterrupte
 }
 
 TEST(Restart, SigtermStopsAfterTheCurrentIncrementAndTheRunCanContinue) {
-  const fs::path dir = scratch("term");
+  const fs::path dir = scratch("restart", "term");
   const std::string deck = long_deck(dir);
   const int status = start_and_signal(deck, dir / "out", 20, SIGTERM);
   ASSERT_TRUE(WIFEXITED(status));
@@ -133,14 +130,52 @@ TEST(Restart, SigtermStopsAfterTheCurrentIncrementAndTheRunCanContinue) {
   EXPECT_EQ(std::count(h.begin(), h.end(), '\n'), 302);
 }
 
-TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
-  const fs::path dir = scratch("refuse");
+TEST(Restart, ACompletedRunOrAnotherModelIsRefusedWithTheWayOut) {
+  const fs::path dir = scratch("restart", "refuse");
   const std::string example = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
-  ASSERT_EQ(run("run " + example + " -q -o " + (dir / "done").string()), 0);
-  EXPECT_EQ(run("run " + example + " --restart " + (dir / "done").string()), 2);
+  const std::string done = (dir / "done").string();
+  ASSERT_EQ(run("run " + example + " -q -o " + done), 0);
+  // Nothing left to run: add a step, or run afresh.
+  Outcome o = run_cli("run " + example + " --restart " + done);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("the run in " + done + " has already completed every step of this deck (the last is step 2 "
+                          "'inflation'), so nothing is left to run. To continue it, add a step after step 2 'inflation' "
+                          "to `steps` (e.g. `- {name: more, increments: 10, set: {lumen: <its new value>}}`)"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("leave out --restart (`tunica run " + example + " -o <new folder>`"), std::string::npos)
+      << o.output;
+  // Completed, and a key it depends on changed: the key, and a fresh folder for the changed deck.
+  const std::string changed = (dir / "changed.yaml").string();
+  const std::string changed_text = replace(read_text(example), "a1: 0.68238", "a1: 0.7");
+  std::ofstream(changed) << changed_text;
+  o = run_cli("run " + changed + " --restart " + done);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  const std::string line = std::to_string(line_of(changed_text, "a1: 0.7"));
+  EXPECT_NE(o.output.find(changed + ":" + line + ":"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("line " + line + ": materials.aorta.a1 (was '0.68238', now '0.7')"), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("That run has already completed every step of this deck, so a restart could only continue "
+                          "it, with the values it had. To run the changed deck, start it in a fresh output folder"),
+            std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("nothing is left to run"), std::string::npos) << o.output;
+  // Another model: which keys differ, and both ways out.
   const std::string other = (dir / "other.yaml").string();
   std::ofstream(other) << replace(read_text(example), "elements: 1}", "elements: 3}");
-  EXPECT_EQ(run("run " + other + " --restart " + (dir / "done").string()), 2);
+  o = run_cli("run " + other + " --restart " + done);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("the run in " + done + " is of another model than this deck: it was started with the deck '" +
+                          example + "' and has 4 DOFs, 2 boundary condition(s) and 1 load(s), where this deck has 8, 2 "
+                          "and 1;"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("parts.wall.mesh.elements (was '1', now '3')"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("Run this deck in a fresh output folder (`tunica run " + other + " -o <new folder>`), or "
+                          "continue that run with the deck that wrote it (`tunica run " + example + " --restart " +
+                          done + "`)."),
+            std::string::npos)
+      << o.output;
   EXPECT_EQ(run("run " + example + " --restart " + (dir / "nothing-here").string()), 2);
 }
 
@@ -148,7 +183,7 @@ TEST(Restart, ACompletedRunOrAnotherModelIsRefused) {
 // Kirchhoff–Love shells, the part that enters in step 2 and the contact between shells, and
 // the continued run reproduces the uninterrupted one bit for bit in history.csv.
 TEST(Restart, AKilledShellRunRestartsToTheUninterruptedResults) {
-  const fs::path dir = scratch("shell");
+  const fs::path dir = scratch("restart", "shell");
   const std::string deck = (dir / "shell.yaml").string();
   std::ofstream(deck) << replace(kShellArteryBalloon, "{name: inflate, increments: 8,", "{name: inflate, increments: 400,");
   ASSERT_EQ(run("run " + deck + " -q -o " + (dir / "full").string()), 0);
@@ -168,7 +203,7 @@ TEST(Restart, AKilledShellRunRestartsToTheUninterruptedResults) {
 
 TEST(Restart, CheckpointsFollowTheIntervalAndAStopCommitsTheLastIncrement) {
   // checkpoint_every_s: 1000 — within the run's first step only its reference state is checkpointed.
-  const fs::path dir = scratch("interval");
+  const fs::path dir = scratch("restart", "interval");
   std::string text = read_text(long_deck(dir));
   const std::string deck = (dir / "sparse.yaml").string();
   std::ofstream(deck) << replace(text, "output:\n", "output:\n  checkpoint_every_s: 1000\n");
@@ -195,7 +230,7 @@ TEST(Restart, ARunThatStopsOnAFailedIncrementHasAFrameOfItsLastConvergedState) {
   // The balloon pressed past its pressure maximum (about 0.0124 MPa) under pressure control:
   // the run stops with exit 3. With vtk_every: 100 no increment of the step would have a
   // frame; the last converged state gets one, recorded in the checkpoint.
-  const fs::path dir = scratch("limit");
+  const fs::path dir = scratch("restart", "limit");
   std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
   text = replace(replace(replace(text, "increments: 20", "increments: 10"), "elements: 100}", "elements: 20}"),
                  "inflation: 0.0118 MPa", "inflation: 0.015 MPa");
@@ -212,4 +247,26 @@ TEST(Restart, ARunThatStopsOnAFailedIncrementHasAFrameOfItsLastConvergedState) {
   EXPECT_TRUE(fs::exists(dir / "out" / "vtk" / "surface_000001.vtu"));
   // The folder is consistent: a restart accepts it (and stops at the same limit point).
   EXPECT_EQ(run("run " + deck + " -q --restart " + (dir / "out").string()), 3);
+}
+
+TEST(Restart, ARestartedRunThatStopsAtTheLimitPointGivesTheSameHint) {
+  // The balloon pushed past its pressure maximum stops with the hint that names volume control,
+  // from the pressure–volume curve of the step's converged increments. Restarted from its last
+  // converged increment, the run fails there again and the hint is the same: the restart file
+  // keeps what the hint reads of the increments before it.
+  const fs::path dir = scratch("restart", "hint");
+  std::string text = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  text = replace(replace(replace(text, "increments: 20", "increments: 10"), "elements: 100}", "elements: 20}"),
+                 "inflation: 0.0118 MPa", "inflation: 0.015 MPa");
+  const std::string deck = (dir / "limit.yaml").string();
+  std::ofstream(deck) << replace(text, "output:\n", "output:\n  vtk_segments: 8\n");
+  const Outcome first = run_cli("run " + deck + " -q -o " + (dir / "out").string());
+  ASSERT_EQ(first.exit_code, 3) << first.output;
+  const std::size_t hint = first.output.find("Hint: the pressure–volume curve of load 'inflation' has flattened");
+  ASSERT_NE(hint, std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("`volume_control: {load: inflation, volume: <enclosed volume>}`"), std::string::npos)
+      << first.output;
+  const Outcome again = run_cli("run " + deck + " -q --restart " + (dir / "out").string());
+  ASSERT_EQ(again.exit_code, 3) << again.output;
+  EXPECT_NE(again.output.find(first.output.substr(hint)), std::string::npos) << again.output;
 }

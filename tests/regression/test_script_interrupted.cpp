@@ -16,16 +16,16 @@
 #include <vector>
 
 #include "../support/capture.hpp"
+#include "../support/scratch.hpp"
 
 using namespace tunica::test;
 namespace fs = std::filesystem;
 
 namespace {
 
-/// A scratch folder, with `tmp/` as the checks' TMPDIR.
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("tunica-script-interrupted-" + std::to_string(getpid())) / name;
-  fs::remove_all(d);
+/// An empty folder, with `tmp/` as the checks' TMPDIR.
+fs::path folder(const std::string& name) {
+  const fs::path d = scratch("script-interrupted", name);
   fs::create_directories(d / "tmp");
   return d;
 }
@@ -113,7 +113,7 @@ const std::string kBusy = "System \"sleep 20\";\n";
 
 TEST(ScriptInterrupted, SigtermOrCtrlCWhileGmshMeshesEndsAtOnceWithAMessageAndNoTemporaryFolder) {
   for (const int sig : {SIGTERM, SIGINT}) {
-    const fs::path dir = scratch("signal-" + std::to_string(sig));
+    const fs::path dir = folder("signal-" + std::to_string(sig));
     const std::string deck = write_deck(dir, kBusy);
     Child check{start_check(deck, dir / "tmp", dir / "check.log")};
     ASSERT_TRUE(wait_for_meshing(dir / "tmp", check.pid)) << read_text((dir / "check.log").string());
@@ -133,7 +133,7 @@ TEST(ScriptInterrupted, SigtermOrCtrlCWhileGmshMeshesEndsAtOnceWithAMessageAndNo
 }
 
 TEST(ScriptInterrupted, TheFolderOfAKilledCheckIsRemovedByTheNextMeshingButNotThatOfARunningOne) {
-  const fs::path dir = scratch("stale");
+  const fs::path dir = folder("stale");
   const fs::path tmp = dir / "tmp";
   const std::string busy = write_deck(dir, kBusy);
   // Killed outright while Gmsh runs: its folder stays behind.

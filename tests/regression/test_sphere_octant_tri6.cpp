@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "../support/capture.hpp"
+#include "../support/scratch.hpp"
 #include "../support/sphere_octant.hpp"
 #include "mesh/surface_generators.hpp"
 
@@ -26,12 +27,6 @@ using namespace tunica::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "tunica-sphere-octant-tri6";
-  fs::create_directories(dir);
-  return dir / name;
-}
 
 using Key = std::array<double, 3>;
 Key key(const Eigen::Vector3d& x) { return {x(0), x(1), x(2)}; }
@@ -82,9 +77,9 @@ TEST(SphereOctantTri6, CubeLatticeIsTheGeneratorsMeshWithMidEdgeNodesOnTheSphere
   }
   // A deck reads the file as 6n² six-node triangles on 12n² + 6n + 1 nodes.
   const int n = 3;
-  const fs::path msh = scratch("cube-3.msh");
+  const fs::path msh = scratch("sphere-octant-tri6") / "cube-3.msh";
   const std::string deck = sphere_octant_deck("tri6 octant", octant_msh_mesh(msh.string(), msh.string(), n, 2, OctantLattice::cube), "", 1);
-  const Model model = read_deck_text(deck, scratch("sphere.yaml").string());
+  const Model model = read_deck_text(deck, (scratch("sphere-octant-tri6") / "sphere.yaml").string());
   ASSERT_EQ(model.parts.size(), 1u);
   ASSERT_EQ(model.parts[0].blocks.size(), 1u);
   EXPECT_EQ(model.parts[0].blocks[0].size(), 6 * n * n);
@@ -100,7 +95,8 @@ struct SphereRun {
 };
 
 SphereRun sphere(const OctantMesh& mesh) {
-  const Model m = read_deck_text(sphere_octant_deck("sphere octant", mesh, "", 1), scratch("sphere.yaml").string());
+  const std::string file = (scratch("sphere-octant-tri6") / "sphere.yaml").string();
+  const Model m = read_deck_text(sphere_octant_deck("sphere octant", mesh, "", 1), file);
   Capture cap;
   Analysis a(m);
   a.run(cap);
@@ -119,7 +115,7 @@ TEST(SphereOctantTri6, PressureErrorFallsFasterThanTheQuadsOnTheSameNodes) {
   const std::vector<int> ns = {2, 4, 8};
   std::vector<SphereRun> tri6, quad4;
   for (int n : ns) {
-    const fs::path msh = scratch(fmt::format("cube-tri6-{}.msh", n));
+    const fs::path msh = scratch("sphere-octant-tri6") / fmt::format("cube-tri6-{}.msh", n);
     tri6.push_back(sphere(octant_msh_mesh(msh.string(), msh.string(), n, 2, OctantLattice::cube)));
     quad4.push_back(sphere(octant_generator_mesh(2 * n)));  // the same nodes: the corners of the 2n lattice
   }

@@ -25,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "../support/capture.hpp"
+#include "../support/scratch.hpp"
 #include "../support/fung_tube.hpp"
 #include "../support/lattice_msh.hpp"
 #include "../support/sphere_octant.hpp"
@@ -35,12 +36,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "tunica-tri6-convergence";
-  fs::create_directories(dir);
-  return dir / name;
-}
-
 // ---- sphere ----------------------------------------------------------------------------------
 
 constexpr double kMu = 1.0, kR = 1.0, kH = 0.01;  // MPa, mm, mm
@@ -50,7 +45,7 @@ double sphere_pressure(double l) { return 2 * kMu * (kH / kR) * (1 / l - std::po
 /// The octant x, y, z ≥ 0: the octahedron face's lattice projected on the sphere
 /// (sphere_octant.hpp, n² triangles; node sets x0, y0, z0, pole).
 fs::path octant_msh(int n, int order) {
-  const fs::path path = scratch(fmt::format("octant-{}-{}.msh", n, order));
+  const fs::path path = scratch("tri6-convergence") / fmt::format("octant-{}-{}.msh", n, order);
   sphere_octant_lattice(n, order, OctantLattice::octahedron, kR).write(path.string());
   return path;
 }
@@ -92,7 +87,7 @@ output:
     - {{quantity: position_z, node_set: pole, name: pole_z, unit: mm}}
 )",
                                        kMu, kH, octant_msh(n, order).string(), p);
-  const Model m = read_deck_text(deck, scratch("sphere.yaml").string());
+  const Model m = read_deck_text(deck, (scratch("tri6-convergence") / "sphere.yaml").string());
   Capture cap;
   Analysis a(m);
   a.run(cap);
@@ -154,7 +149,7 @@ fs::path tube_msh(int around, int along, int order) {
   w.sets["y0"] = w.nodes_where([](const LatticePoint& l) { return l[0] == 0; });
   w.sets["bottom"] = w.nodes_where([](const LatticePoint& l) { return l[1] == 0; });
   w.sets["top"] = w.nodes_where([=](const LatticePoint& l) { return l[1] == 2 * along; });
-  const fs::path path = scratch(fmt::format("tube-{}-{}-{}.msh", around, along, order));
+  const fs::path path = scratch("tri6-convergence") / fmt::format("tube-{}-{}-{}.msh", around, along, order);
   w.write(path.string());
   return path;
 }

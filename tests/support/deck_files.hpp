@@ -8,6 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli.hpp"
 
@@ -27,6 +28,12 @@ inline int line_of(const std::string& text, const std::string& needle) {
   const auto pos = text.find(needle);
   if (pos == std::string::npos) throw std::runtime_error("not found: " + needle);
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+/// `pattern` with each "{}" replaced by the line of the next of `needles` in `text`.
+inline std::string fmt_lines(std::string pattern, const std::string& text, const std::vector<std::string>& needles) {
+  for (const std::string& n : needles) pattern.replace(pattern.find("{}"), 2, std::to_string(line_of(text, n)));
+  return pattern;
 }
 
 /// Writes `text` as <tmp>/<dir>/<name>.yaml, runs `tunica check` on it and expects exit 2 and

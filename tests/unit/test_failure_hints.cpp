@@ -31,13 +31,14 @@ Step raising(double target) {
 }
 
 /// Converged states along p(V): the step's start and each increment's.
-std::vector<LoadState> along(const std::vector<std::pair<double, double>>& pv) {
-  std::vector<LoadState> out;
+StepTrace along(const std::vector<std::pair<double, double>>& pv) {
+  StepTrace out;
   for (auto [p, v] : pv) {
     LoadState s;
     s.pressure = {p};
     s.volume = {v};
-    out.push_back(s);
+    if (out.count() == 0) out.restart_at(s);
+    else out.push(s);
   }
   return out;
 }
@@ -134,6 +135,40 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   const std::string past =
       failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
   EXPECT_NE(past.find("likely at a maximum"), std::string::npos) << past;
+}
+
+TEST(FailureHints, WithoutParaViewFramesTheHintPointsToWhatWasWritten) {
+  // The hint for a local failure sends the user to the last frame; with `vtk: false` there is none.
+  Model m = one_load_model();
+  const auto slowing = along({{0, 0}, {1, 1}, {1.1, 2}, {1.18, 3}, {1.24, 4}});
+  const std::string with = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.25));
+  EXPECT_NE(with.find("look at newton.csv (active_changes) and the last frame"), std::string::npos) << with;
+  m.output.vtk = false;
+  const std::string without = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.25));
+  EXPECT_EQ(without.find("frame where"), std::string::npos) << without;
+  EXPECT_EQ(without.find("last frame"), std::string::npos) << without;
+  EXPECT_NE(without.find("look at newton.csv (active_changes) and history.csv"), std::string::npos) << without;
+  EXPECT_NE(without.find("no ParaView frames were written, `output.vtk` is false"), std::string::npos) << without;
+}
+
+TEST(FailureHints, ALongStepIsJudgedByItsFirstAndLastIncrements) {
+  // The trace keeps the step's start, its first converged increment and the last three: a step
+  // of many increments gives the hint its first and last slopes give.
+  const Model m = one_load_model();
+  std::vector<std::pair<double, double>> pv = {{0, 0}, {1, 1}};
+  for (int k = 2; k < 40; ++k) pv.push_back({1 + 0.01 * (k - 1), static_cast<double>(k)});  // dp/dV = 0.01
+  const StepTrace long_step = along(pv);
+  EXPECT_EQ(long_step.count(), 40);
+  EXPECT_EQ(long_step.kept().size(), StepTrace::kFirst + StepTrace::kLast);
+  EXPECT_EQ(long_step.first(1).volume[0], 1);
+  EXPECT_EQ(long_step.last(0).volume[0], 39);
+  EXPECT_EQ(long_step.last(2).volume[0], 37);
+  const std::string h = failure_hints(m, raising(3), failed("diverging", 1), long_step, trying(1.4));
+  EXPECT_NE(h.find("dp/dV down to 1 %"), std::string::npos) << h;
+  // What a restart file records reads back as the same trace; a record that cannot be one is refused.
+  const StepTrace again = StepTrace::recorded(long_step.kept(), long_step.count());
+  EXPECT_EQ(failure_hints(m, raising(3), failed("diverging", 1), again, trying(1.4)), h);
+  EXPECT_THROW(StepTrace::recorded(long_step.kept(), 3), std::invalid_argument);
 }
 
 namespace {

@@ -22,6 +22,7 @@
 #include "core/errors.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "mesh/mesh_checks.hpp"
+#include "../support/scratch.hpp"
 
 using namespace tunica;
 using Eigen::Vector3d;
@@ -29,18 +30,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Per-process scratch directory (tests may run in parallel processes).
-fs::path scratch() {
-  static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("tunica-gmsh-reader-" + std::to_string(getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
 std::string write(const std::string& name, const std::string& text) {
-  const fs::path p = scratch() / name;
+  const fs::path p = test::scratch("gmsh-reader") / name;
   std::ofstream(p) << text;
   return p.string();
 }
@@ -155,7 +146,7 @@ TEST(GmshReader, MshWithTrianglesQuadsAndDirectionView) {
 }
 
 TEST(GmshReader, MissingFile) {
-  const std::string path = (scratch() / "no-such-mesh.msh").string();
+  const std::string path = (test::scratch("gmsh-reader") / "no-such-mesh.msh").string();
   const InputError e = input_error([&] { read_gmsh(path); });
   EXPECT_EQ(e.where().file, path);
   EXPECT_EQ(e.where().line, 0);
@@ -360,7 +351,7 @@ TEST(GmshReader, ScriptsAreMeshedWhileOtherThreadsThrowAndAllocate) {
 TEST(GmshReader, ACommandTheScriptLeavesRunningNeitherBlocksNorOutlivesTheRead) {
   // A background command started by the script's System holds the report pipe open;
   // the read ends when Gmsh has, and the command is ended with it.
-  const fs::path pidfile = scratch() / "background.pid";
+  const fs::path pidfile = test::scratch("gmsh-reader") / "background.pid";
   const std::string geo =
       write("background.geo", quarter_cylinder_geo("System \"sleep 30 & echo $! > " + pidfile.string() + "\";\n"));
   const auto t0 = std::chrono::steady_clock::now();

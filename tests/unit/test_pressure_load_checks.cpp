@@ -124,7 +124,7 @@ TEST(PressureLoadChecks, AHoleInAWallIsAnUnheldChainOfOpenEdges) {
           for (int n : {5 * j + i, 5 * j + i + 1, 5 * (j + 1) + i + 1, 5 * (j + 1) + i}) b.nodes.push_back(n);
     p.blocks.push_back(b);
     m.parts.push_back(p);
-    NodeSet edge{"wall.edge", {}};
+    NodeSet edge{"wall.edge", {}, "this test"};
     for (int n = 0; n < 25; ++n)
       if (n % 5 == 0 || n % 5 == 4 || n < 5 || n >= 20) edge.nodes.push_back(n);
     m.node_sets.push_back(edge);

@@ -1,6 +1,7 @@
 // Units: conversion of deck values into the deck's unit system (UDUNITS-2).
 #include <gtest/gtest.h>
 
+#include "core/article.hpp"
 #include "params/units.hpp"
 
 using namespace tunica;
@@ -20,6 +21,22 @@ TEST(Units, WrongDimensionAndUnknownUnitAreRefused) {
   EXPECT_THROW(u.to_internal(1, "kPa", Dimension::length), std::invalid_argument);
   EXPECT_THROW(u.to_internal(1, "furlongs_per_fortnight", Dimension::length), std::invalid_argument);
   EXPECT_THROW(UnitSystem("N", "N"), std::invalid_argument);
+}
+
+TEST(Units, AWrongDimensionIsNamedWithItsArticle) {
+  const UnitSystem u("mm", "N");
+  const auto reason = [&](const std::string& unit, Dimension d) {
+    try {
+      u.to_internal(1, unit, d);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(reason("mm", Dimension::angle), "unit 'mm' is not an angle");
+  EXPECT_EQ(reason("deg", Dimension::length), "unit 'deg' is not a length");
+  EXPECT_EQ(with_article("unit"), "a unit");
+  EXPECT_EQ(with_article("element"), "an element");
 }
 
 TEST(Units, SplitQuantity) {

@@ -1,0 +1,123 @@
+#include "io/yaml_syntax.hpp"
+
+#include <fmt/format.h>
+
+#include <climits>
+#include <tuple>
+#include <vector>
+
+namespace tunica {
+
+namespace {
+
+/// (line, column) of the first tab in the indentation of a line up to `last_line` (1-based), or (0, 0).
+std::pair<int, int> indenting_tab(const std::string& text, int last_line) {
+  int line = 1;
+  for (std::size_t start = 0; start < text.size() && line <= last_line; ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    for (std::size_t i = start; i < end && (text[i] == ' ' || text[i] == '\t'); ++i)
+      if (text[i] == '\t') return {line, static_cast<int>(i - start) + 1};
+    start = end + 1;
+  }
+  return {0, 0};
+}
+
+/// An open `{` or `[`: the bracket, its line and column (1-based).
+using Open = std::tuple<char, int, int>;
+
+/// The brackets still open before (line, column) (1-based; column 0: the start of the line),
+/// outside quotes and comments, innermost last.
+std::vector<Open> open_brackets(const std::string& text, int stop_line, int stop_column) {
+  std::vector<Open> open;
+  int line = 1, column = 0;
+  char quote = 0;
+  bool comment = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    ++column;
+    if (line > stop_line || (line == stop_line && column >= stop_column)) break;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+      comment = false;
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t' || text[i - 1] == '\n')) comment = true;
+    else if (c == '"' || c == '\'') quote = c;
+    else if (c == '{' || c == '[') open.emplace_back(c, line, column);
+    else if ((c == '}' || c == ']') && !open.empty()) open.pop_back();
+  }
+  return open;
+}
+
+char closer(char opener) { return opener == '{' ? '}' : ']'; }
+
+/// The text of line `line` (1-based) from column `from` to column `to` (1-based, inclusive).
+std::string line_span(const std::string& text, int line, int from, int to) {
+  std::size_t start = 0;
+  for (int l = 1; l < line; ++l) {
+    const std::size_t newline = text.find('\n', start);
+    if (newline == std::string::npos) return "";
+    start = newline + 1;
+  }
+  if (from < 1 || to < from) return "";
+  const std::size_t end = std::min(text.find('\n', start), text.size());
+  if (start + to > end) return "";
+  return text.substr(start + from - 1, to - from + 1);
+}
+
+/// What may stand where yaml-cpp found a `}` or `]` that closes nothing or the wrong bracket
+/// ("illegal flow end"), at (line, column).
+std::string flow_end_cause(const std::string& text, int line, int column) {
+  const std::string here = line_span(text, line, column, column);
+  if (here != "}" && here != "]") return "";
+  const char c = here[0];
+  const std::vector<Open> open = open_brackets(text, line, column);
+  if (open.empty())
+    return fmt::format(": this `{}` closes no `{}`, since none is open here. Remove it, or add the `{}` where the {} "
+                       "begins; a value that holds a `{}` is written in quotes ('a{}b')",
+                       c, c == '}' ? '{' : '[', c == '}' ? '{' : '[', c == '}' ? "map" : "list", c, c);
+  const auto [opener, open_line, open_column] = open.back();
+  std::string fix = fmt::format("write `{}` before this `{}`", closer(opener), c);
+  if (open_line == line && column - open_column <= 40)
+    fix += fmt::format(" (`{}{}{}`)", line_span(text, line, open_column, column - 1), closer(opener), c);
+  fix += fmt::format(", or `{}` instead of it", closer(opener));
+  return fmt::format(": this `{}` would close the `{}` opened on line {}, column {}, which only `{}` closes (a `[` "
+                     "list ends with `]`, a `{{` map with `}}`): {}",
+                     c, opener, open_line, open_column, closer(opener), fix);
+}
+
+}  // namespace
+
+InputError yaml_syntax_error(const YAML::Exception& e, const std::string& text, const std::string& file) {
+  const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
+  const int column = e.mark.is_null() ? 0 : e.mark.column + 1;
+  // yaml-cpp says "illegal tab when looking for indentation" or something further off: name the tab.
+  if (const auto tab = indenting_tab(text, line > 0 ? line : INT_MAX);
+      tab.first > 0 && (tab.first == line || e.msg.find("tab") != std::string::npos))
+    return InputError({file, tab.first, tab.second, ""},
+                      "a tab indents this line, and YAML allows only spaces for indentation: replace the tab with "
+                      "spaces (YAML syntax error: " + e.msg + ")");
+  std::string cause;
+  if (e.msg.find("flow not found") != std::string::npos) {
+    // An unclosed `[` or `{`, noticed where yaml-cpp gave up: the innermost one open at the next line.
+    const char bracket = e.msg.find("map") != std::string::npos ? '{' : '[';
+    const std::vector<Open> open = open_brackets(text, line > 0 ? line + 1 : INT_MAX, 0);
+    for (auto it = open.rbegin(); it != open.rend(); ++it)
+      if (std::get<0>(*it) == bracket) {
+        cause = fmt::format(" (the `{}` opened on line {}, column {} is not closed: add the `{}` there)", bracket,
+                            std::get<1>(*it), std::get<2>(*it), closer(bracket));
+        break;
+      }
+  } else if (e.msg == "illegal flow end" && line > 0) {
+    cause = flow_end_cause(text, line, column);
+  }
+  return InputError({file, line, column, ""}, "YAML syntax error: " + e.msg + cause);
+}
+
+}  // namespace tunica
