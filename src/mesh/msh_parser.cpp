@@ -41,7 +41,8 @@ public:
       if (t[0] != '$')
         fail(fmt::format("expected the start of a section ($Nodes, $Elements, ...), found '{}'", printable(t)), at);
       const std::string name(t.substr(1));
-      section_ = "$" + printable(name);
+      // fmt::format, not "$" + printable(...): GCC 12 warns falsely on that (-Wrestrict, GCC bug 105651).
+      section_ = fmt::format("${}", printable(name));
       section_line_ = at;
       if (name == "Nodes" || name == "Elements" || name == "Entities" || name == "PhysicalNames") {
         if (!seen.insert(name).second) fail(fmt::format("the file has a second {} section", section_), at);

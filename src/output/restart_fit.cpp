@@ -76,11 +76,11 @@ std::vector<Change> first_of_each_section(const std::vector<Change>& changes) {
   return out;
 }
 
-/// One line per change, at most `max`, then how many more.
-std::string listed(const std::vector<Change>& changes, std::size_t max) {
+/// One line per change, at most `max`, then how many more (of `what`).
+std::string listed(const std::vector<Change>& changes, std::size_t max, const char* what = "") {
   std::string list;
   for (std::size_t k = 0; k < changes.size() && k < max; ++k) list += "\n  " + changes[k].text;
-  if (changes.size() > max) list += fmt::format("\n  and {} more", changes.size() - max);
+  if (changes.size() > max) list += fmt::format("\n  and {} more{}", changes.size() - max, what);
   return list;
 }
 
@@ -107,7 +107,7 @@ std::string check_restart_fits(const Model& m, const RestartRecord& r, const std
                     m.boundaries.size(), m.loads.size(),
                     changes.empty() ? std::string(".")
                                     : fmt::format("; {} it depends on differ{}, the first of each section:{}", keys,
-                                                  changes.size() == 1 ? "s" : "", listed(first_of_each_section(changes), 6)),
+                                                  changes.size() == 1 ? "s" : "", listed(first_of_each_section(changes), 6, " section(s)")),
                     m.deck_file, r.deck, folder));
 
   // Every step done: a restart has nothing to run, unless the deck adds a step.
