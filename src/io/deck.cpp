@@ -488,8 +488,6 @@ void read_boundaries(const DeckNode& deck, Model& m) {
           if (!m.has_slopes(n))
             d.fail("DOF '" + s + "': node set '" + p.text("node_set") +
                    "' has nodes without slopes (only nodes of axisymmetric_shell parts have slope_r and slope_z)");
-      if (std::find(b.dofs.begin(), b.dofs.end(), c) != b.dofs.end())
-        d.fail("DOF '" + s + "' is listed twice: list each DOF once (" + allowed + ")");
       b.dofs.push_back(c);
     }
     m.boundaries.push_back(std::move(b));

@@ -48,8 +48,8 @@ bool leaves_inflation(const Body& b, const std::vector<unsigned>& held, int j, d
 void apply(const Body& b, const Hold& h, std::vector<unsigned>& held) {
   if (h.set >= 0)
     for (int n : b.m.node_sets[h.set].nodes) held[n] |= 1u << h.dof;
-  else
-    held[h.node] |= 1u << h.dof;
+  else if (h.node >= 0)
+    held[static_cast<std::size_t>(h.node)] |= 1u << h.dof;
 }
 
 /// One node whose DOF stops `r`, preferring one that leaves an inflation free: for a translation

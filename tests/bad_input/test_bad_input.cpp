@@ -160,8 +160,7 @@ TEST(BadInput, ADofListedTwiceIsAnErrorAtItsItem) {
   // `[z, z]` was read as `[z]`; most likely another DOF was meant.
   expect_error("dof-twice", "stretch: {node_set: wall.end, dofs: [z]}", "stretch: {node_set: wall.end, dofs: [z, z]}",
                "boundary.stretch.dofs[1]",
-               "DOF 'z' is listed twice: list each DOF once (axisymmetric DOFs are r and z, and slope_r and slope_z on "
-               "shells)");
+               "DOF 'z' is listed twice in `dofs`: list each DOF once (or write the one meant; not listed: r)");
 }
 
 TEST(BadInput, ATubeWithoutX0SaysWhyAndProposesNoOtherSet) {

@@ -106,7 +106,7 @@ TEST(MessageClasses, AClosingBracketOfTheWrongKindSaysWhichClosesThere) {
 }
 
 TEST(MessageClasses, AClosingBracketThatClosesNothingSaysSo) {
-  expect_deck_message("flow-end-stray", "solver: {residual_tolerance: 1e-10}", "solver: {residual_tolerance: 1e-10}}",
+  expect_deck_message("flow-end-stray", "solver: {residual_tolerance: 1e-10,", "solver: {residual_tolerance: 1e-10}},",
                       "solver: {residual", "", "YAML syntax error: illegal flow end: this `}` closes no `{`, since none "
                       "is open here",
                       "Remove it, or add the `{` where the map begins; a value that holds a `}` is written in quotes");

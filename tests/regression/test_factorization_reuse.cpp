@@ -46,7 +46,7 @@ ReuseRun run(const std::string& reuse, int increments, int prestretch_increments
 }  // namespace
 
 TEST(FactorizationReuse, LastSavesFactorizationsWithoutIterationsAndBasinSavesMore) {
-  for (const auto [increments, prestretch] : {std::pair{6, 4}, std::pair{1, 1}}) {
+  for (const auto& [increments, prestretch] : {std::pair{6, 4}, std::pair{1, 1}}) {
     const ReuseRun never = run("never", increments, prestretch);
     const ReuseRun last = run("last", increments, prestretch);
     const ReuseRun basin = run("basin", increments, prestretch);
