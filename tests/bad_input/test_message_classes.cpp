@@ -197,6 +197,18 @@ TEST(MessageClasses, VolumeAxisThatDoesNotFitTheOpenEndsGivesTheTubesAxis) {
   EXPECT_NE(o.output.find("which fits: `volume_axis: [0, 0, 1]`"), std::string::npos) << o.output;
 }
 
+TEST(MessageClasses, RigidSurfaceTheSlaveStartsBehindGivesTheSide) {
+  const std::string deck = read_text(kExample) +
+                           "rigid_surfaces:\n  sleeve: {type: cylinder, radius: 1.2 mm, side: outside}\n"
+                           "contact:\n  wall_sleeve: {slave: wall, rigid: sleeve, penalty: 1e3 N/mm^3}\n";
+  const Outcome o = expect_check_error(kScratch, "rigid-behind", deck, "wall_sleeve: {slave: wall",
+                                       "contact.wall_sleeve.rigid",
+                                       "contact pair 'wall_sleeve': 2 of the 2 slave nodes of 'wall' that face the rigid "
+                                       "surface 'sleeve' lie behind it at the reference state, the deepest by 0.437 mm");
+  EXPECT_SAYS(o, "write `side: inside` in rigid_surfaces.sleeve (line " +
+                     std::to_string(line_of(deck, "  sleeve: {type: cylinder")) + ")");
+}
+
 TEST(MessageClasses, UndefinedPartListsTheParts) {
   expect_deck_message("undefined-part", "part: wall}", "part: wal}", "part: wal}", "loads.lumen.part",
                       "undefined part 'wal' (the parts are: wall", "did you mean 'wall'?");
