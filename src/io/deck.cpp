@@ -121,7 +121,9 @@ const ComponentSpec& step_spec() {
        structured("volume_control", "map",
                   "`{load: <pressure load>, volume: <target>}`: that load's pressure becomes an unknown and "
                   "the enclosed volume of its surface is ramped from its value at the start of the step to "
-                  "the target (follows a pressure maximum)"),
+                  "the target (follows a pressure maximum; axisymmetric and 3-D models). The load's volume must be "
+                  "positive at the reference state: volume control of a load that pushes its surface inward is an "
+                  "error"),
        structured("solver", "map", "overrides of the top-level `solver` keys for this step")}};
   return s;
 }
@@ -591,6 +593,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       if (const int late = m.loads[s.volume_control.load].part; static_cast<int>(m.steps.size()) < m.parts[late].enter_step)
         vc["load"].fail("load '" + load + "' acts on part '" + m.parts[late].name + "', which has not entered yet");
       s.volume_control.target = read_quantity(vc.required("volume"), Dimension::volume, m.units);
+      s.volume_control.where = vc["volume"].where();
       if (!(s.volume_control.target > 0)) vc["volume"].fail("the target volume must be positive");
     }
     m.steps.push_back(std::move(s));

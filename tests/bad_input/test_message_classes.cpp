@@ -209,6 +209,32 @@ TEST(MessageClasses, RigidSurfaceTheSlaveStartsBehindGivesTheSide) {
                      std::to_string(line_of(deck, "  sleeve: {type: cylinder")) + ")");
 }
 
+TEST(MessageClasses, VolumeControlOfALoadThatPushesInwardNamesFlip) {
+  // The tube's volume under `flip: true` is −π R² L = −1.829 mm³: a positive target is reached only
+  // through zero, everting the tube. Refused at the target, by check and by run, with the fix.
+  const std::string controlled =
+      replace(read_text(kExample), "    set: {lumen: 200 mmHg}", "    volume_control: {load: lumen, volume: 3 mm^3}");
+  const std::string flipped =
+      replace(controlled, "lumen: {type: pressure, part: wall}", "lumen: {type: pressure, part: wall, flip: true}");
+  const Outcome o = expect_check_error(kScratch, "volume-control-flip", flipped, "volume_control: {load: lumen",
+                                       "steps[1].volume_control.volume",
+                                       "step 2 'inflation' controls the volume of load 'lumen', which is -1.82894 mm³ "
+                                       "at the reference state");
+  EXPECT_SAYS(o, "because the load has `flip: true`");
+  EXPECT_SAYS(o, "remove `flip: true` from the load (or set `flip: false`): the volume is then 1.82894 mm³");
+  const fs::path out = fs::temp_directory_path() / kScratch / "volume-control-flip-out";
+  EXPECT_EQ(run_cli("run " + (fs::temp_directory_path() / kScratch / "volume-control-flip.yaml").string() + " -q -o " +
+                    out.string())
+                .exit_code,
+            2);
+  // Without `flip`, a meridian run towards −z points the normals in: the fix is then to set it.
+  const std::string inward = replace(controlled, "from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm]",
+                                     "from: [0.763 mm, 1 mm], to: [0.763 mm, 0 mm]");
+  const Outcome p = expect_check_error(kScratch, "volume-control-inward", inward, "volume_control: {load: lumen",
+                                       "steps[1].volume_control.volume", "the normals point into the volume");
+  EXPECT_SAYS(p, "set `flip: true` on the load (or run the meridian the other way");
+}
+
 TEST(MessageClasses, UndefinedPartListsTheParts) {
   expect_deck_message("undefined-part", "part: wall}", "part: wal}", "part: wal}", "loads.lumen.part",
                       "undefined part 'wal' (the parts are: wall", "did you mean 'wall'?");
