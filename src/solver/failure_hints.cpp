@@ -14,15 +14,20 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
   // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.
-  if (last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3 &&
-      last.residual_falling && last.last_residual <= 1e-3 * last.last_force_scale)
-    add(fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
-                    "raise `max_iterations` in `solver` (now {}).",
-                    last.last_relative_residual, step.solver.max_iterations));
+  const bool still_converging = last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3 &&
+                                last.residual_falling && last.last_residual <= 1e-3 * last.last_force_scale;
+  const std::string more_iterations =
+      fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
+                  "raise `max_iterations` in `solver` (now {}).",
+                  last.last_relative_residual, step.solver.max_iterations);
+  // One hint for one failure: a pressure at the largest the structure carries has no state to
+  // converge to however many iterations are allowed, so that hint replaces raising the limit;
+  // a curve that flattened but still rises leaves the slow convergence as the evidence.
+  std::string limit, rising;
   // A pressure the step raises, under pressure control, whose p–V curve flattens: theory manual §7.1.
+  const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
+  const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
   if (step.volume_control.load < 0 && converged.size() >= 3) {
-    const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
-    const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
     for (std::size_t l = 0; l < model.loads.size(); ++l) {
       const auto target = step.targets.find(model.loads[l].name);
       const LoadState& a = converged.front();
@@ -59,27 +64,37 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       const double tried = attempted.pressure.size() > l ? attempted.pressure[l] : end.pressure[l];
       const bool beyond = sense * tried >= sense * peak;
       if (beyond) {
-        add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
-                        "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at a "
-                        "maximum (a limit point), beyond which no state carries a higher pressure. A step with "
-                        "`volume_control: {{load: {}, volume: <enclosed volume>}}` passes it, controlling the enclosed "
-                        "volume instead (user guide §3.1, volume control).",
-                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]),
-                        model.loads[l].name));
+        // dp/dV changed sign: a maximum passed; still positive: a maximum or an asymptote ahead.
+        limit += fmt::format(
+            " Hint: the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of its "
+            "value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at the largest the "
+            "structure carries ({}), and no state carries the {:.4g} kPa the failed increment tried{}. Lower the "
+            "load below about {:.4g} kPa, or control the enclosed volume instead: a step with `volume_control: "
+            "{{load: {}, volume: <enclosed volume>}}` passes a maximum and approaches an asymptote from below "
+            "(user guide §3.1, volume control).",
+            model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]),
+            now / first <= 0 ? "a maximum of the curve, a limit point, already passed"
+                             : "a maximum of the curve, a limit point, or an asymptote that it approaches",
+            kpa(tried), still_converging ? " (raising `max_iterations` would not help)" : "", kpa(end.pressure[l]),
+            model.loads[l].name);
       } else {
         const std::string trend =
             std::isfinite(peak) ? fmt::format("its trend puts a maximum near {:.4g} kPa, above the {:.4g} kPa the failed "
                                               "increment tried", kpa(peak), kpa(tried))
                                 : "its trend shows no maximum";
-        add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
-                        "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. "
-                        "The failure is likely not a limit point of the pressure but a local one, which "
-                        "`volume_control` need not pass: look at newton.csv (active_changes) and the last frame "
-                        "where the residual sits, e.g. at contact (user guide §6).",
-                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend));
+        rising += fmt::format(
+            " Hint: the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
+            "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. The "
+            "failure is likely not a limit point of the pressure but a local one, which `volume_control` need not "
+            "pass: look at newton.csv (active_changes) and the last frame where the residual sits, e.g. at contact "
+            "(user guide §6).",
+            model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend);
       }
     }
   }
+  if (!limit.empty()) return limit;
+  if (still_converging) add(more_iterations);
+  else hints += rising;
   return hints;
 }
 

@@ -1,7 +1,8 @@
-// The hints a stopped run's message gives (solver/failure_hints.hpp): raise max_iterations when
-// Newton was still converging; volume_control when the pressure–volume curve has flattened
-// to a maximum at the pressure the failed increment tried (a limit point); that the pressure
-// still rises when the curve has flattened short of its maximum; nothing otherwise.
+// The hints a stopped run's message gives (solver/failure_hints.hpp), one per failure: raise
+// max_iterations when Newton was still converging; volume_control when the pressure–volume curve
+// has flattened to a maximum at the pressure the failed increment tried (a limit point), even if
+// Newton was still converging; that the pressure still rises when the curve has flattened short of
+// its maximum; nothing otherwise.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -120,11 +121,11 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   ASSERT_NE(near, std::string::npos) << h;
   EXPECT_NEAR(std::stod(h.substr(near + 30)), kpa(1.3025), 1e-3 * kpa(1.3025)) << h;
   EXPECT_NE(h.find(fmt::format("kPa, above the {:.4g} kPa the failed increment tried", kpa(1.25))), std::string::npos) << h;
-  EXPECT_EQ(h.find("likely at a maximum"), std::string::npos) << h;
+  EXPECT_EQ(h.find("likely at the largest the structure carries"), std::string::npos) << h;
   EXPECT_EQ(h.find("volume_control: {load"), std::string::npos) << h;
   // Trying beyond the predicted maximum: the limit point and volume control.
   const std::string beyond = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.31));
-  EXPECT_NE(beyond.find("likely at a maximum"), std::string::npos) << beyond;
+  EXPECT_NE(beyond.find("likely at the largest the structure carries"), std::string::npos) << beyond;
   EXPECT_NE(beyond.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << beyond;
   // A flattened curve whose dp/dV no longer falls: no maximum in sight.
   const std::string steady =
@@ -133,7 +134,33 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   // Past the maximum (dp/dV negative): the limit point whatever was tried.
   const std::string past =
       failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
-  EXPECT_NE(past.find("likely at a maximum"), std::string::npos) << past;
+  EXPECT_NE(past.find("likely at the largest the structure carries"), std::string::npos) << past;
+}
+
+TEST(FailureHints, AtTheLargestPressureASlowNewtonGetsOneHintNotTwo) {
+  // A tube at its asymptote μH/R: the curve flattened to nothing, the pressure tried at its end,
+  // and Newton creeping (relative residual 2e-4, falling) when the iterations ran out. There is
+  // no state to converge to: the limit, not more iterations.
+  const Model m = one_load_model();
+  const auto flat = along({{0, 0}, {1, 1}, {1.5, 2}, {1.6, 3}, {1.601, 4}});
+  const std::string h = failure_hints(m, raising(1.61), failed("no convergence in 12 iterations", 2e-4), flat, trying(1.605));
+  EXPECT_EQ(h.find("Hint:"), h.rfind("Hint:")) << "one hint: " << h;
+  EXPECT_NE(h.find("likely at the largest the structure carries (a maximum of the curve, a limit point, or an "
+                   "asymptote that it approaches)"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("(raising `max_iterations` would not help)"), std::string::npos) << h;
+  EXPECT_EQ(h.find("raise `max_iterations`"), std::string::npos) << h;
+  EXPECT_NE(h.find("Lower the load below about"), std::string::npos) << h;
+  // Past the maximum (dp/dV negative): said as passed.
+  const std::string past = failure_hints(m, raising(3), failed("no convergence in 12 iterations", 2e-4),
+                                         along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
+  EXPECT_NE(past.find("a maximum of the curve, a limit point, already passed"), std::string::npos) << past;
+  // Short of the predicted maximum, still converging: more iterations, alone.
+  const std::string slow = failure_hints(m, raising(3), failed("no convergence in 12 iterations", 2e-4),
+                                         along({{0, 0}, {1, 1}, {1.1, 2}, {1.18, 3}, {1.24, 4}}), trying(1.25));
+  EXPECT_NE(slow.find("raise `max_iterations` in `solver` (now 12)"), std::string::npos) << slow;
+  EXPECT_EQ(slow.find("Hint:"), slow.rfind("Hint:")) << "one hint: " << slow;
 }
 
 namespace {
