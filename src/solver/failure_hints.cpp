@@ -5,7 +5,62 @@
 #include <cmath>
 #include <limits>
 
+#include "model/rigid_motion_check.hpp"
+
 namespace tunica {
+
+namespace {
+
+/// The bodies that nothing holds against rigid motion in step `step` (0-based; a body counts once
+/// one of its parts has entered), as the deck's warnings name them; empty if none.
+std::string free_body_hint(const Model& model, int step) {
+  std::string out;
+  for (const UnheldBody& b : unheld_rigid_motions(model)) {
+    bool active = false;
+    for (int p : b.parts) active = active || model.part_active(p, step);
+    if (active) out += (out.empty() ? "" : "; ") + b.message;
+  }
+  return out.empty() ? out : "the tangent is singular because a body is free to move rigidly (as `tunica check` warns): " + out + ".";
+}
+
+/// A singular tangent of a model held against rigid motion, at a state Newton reached: no
+/// stiffness left against the load. Names the loads the step raises, what the failed increment
+/// tried and the step's target, the remedies, and the bodies held only by contact.
+std::string held_singular_hint(const Model& model, const Step& step, const std::vector<LoadState>& converged,
+                               const LoadState& attempted) {
+  const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
+  const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
+  std::string tried, control;
+  for (std::size_t l = 0; l < model.loads.size() && l < attempted.pressure.size(); ++l) {
+    const auto target = step.targets.find(model.loads[l].name);
+    if (target == step.targets.end()) continue;
+    tried += fmt::format(" Load '{}' tried {:.4g} kPa = {:.4g} mmHg (the step's target: {:.4g} kPa = {:.4g} mmHg).",
+                         model.loads[l].name, kpa(attempted.pressure[l]), mmhg(attempted.pressure[l]),
+                         kpa(target->second), mmhg(target->second));
+    if (control.empty())
+      control = fmt::format(", and to pass a pressure maximum control the volume (`volume_control: {{load: {}, volume: "
+                            "<enclosed volume>}}`, user guide §3.1)",
+                            model.loads[l].name);
+  }
+  if (converged.size() == 1) tried += " No increment of this step converged, down to the smallest allowed.";
+  // Bodies that only contact holds: once out of contact nothing holds them.
+  std::string contact;
+  const std::vector<UnheldBody> free = unheld_rigid_motions(model);
+  for (const UnheldBody& b : unheld_rigid_motions(model, false)) {
+    bool listed = false;
+    for (const UnheldBody& f : free) listed = listed || f.parts == b.parts;
+    if (!listed) contact += " Held by contact only: " + b.message + ", once it is out of contact.";
+  }
+  return fmt::format(
+      "the model is held against rigid-body motion (`tunica check` finds no body free to move), so a singular "
+      "tangent at a state Newton reached means that no stiffness is left against the load: likely a load beyond "
+      "what the structure carries, with no equilibrium state at it (a limit point).{} Check the value and unit of "
+      "the load against the pressure the structure can carry; to follow the structure up to its limit take smaller "
+      "increments (`increments`){}.{}",
+      tried, control, contact);
+}
+
+}  // namespace
 
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last,
                           const std::vector<LoadState>& converged, const LoadState& attempted) {
@@ -91,6 +146,15 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
             model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend);
       }
     }
+  }
+  if (last.singular) {
+    // Free to move rigidly: the cause whatever the curve says. Held: a load with no equilibrium,
+    // unless the curve says the pressure still rises there.
+    if (const std::string free = free_body_hint(model, attempted.step); !free.empty()) return " Hint: " + free;
+    if (!limit.empty()) return limit;
+    if (!rising.empty()) return rising;
+    add(held_singular_hint(model, step, converged, attempted));
+    return hints;
   }
   if (!limit.empty()) return limit;
   if (still_converging) add(more_iterations);

@@ -11,6 +11,8 @@ namespace tunica {
 
 /// Empty, or one hint (a sentence or more naming the deck key that would help), chosen from the
 /// evidence so that a failure gets one coherent explanation:
+///  - a singular tangent (NewtonResult::singular) of a model with a body that nothing holds
+///    against rigid motion in this step (model/rigid_motion_check.hpp): that body and its hold;
 ///  - the step raises a pressure without volume control and the pressure–volume curve of that
 ///    load flattened over the step's converged increments (dp/dV of the last below a fifth of
 ///    the first's, or negative): if the pressure the failed increment tried lies at or beyond
@@ -19,6 +21,10 @@ namespace tunica {
 ///    asymptote): lower the load, or `volume_control` — whatever Newton's residual did, since
 ///    no state exists to converge to (raising `max_iterations` would not help, and is said so
 ///    when Newton was still converging);
+///  - else a singular tangent of a held model: no stiffness left against the load, likely a load
+///    beyond what the structure carries (the loads tried and their targets; smaller increments,
+///    `volume_control`; bodies held by contact alone), unless the curve says the pressure still
+///    rises there (next);
 ///  - else Newton was still converging at `max_iterations` (last relative residual below 1e-3,
 ///    and the absolute residual ‖R‖ falling over the last two iterations and below 1e-3 of the
 ///    forces that cancel in it): raise `max_iterations`;
