@@ -344,6 +344,30 @@ TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
       << o.output;
 }
 
+TEST(BadInput, AnArcAngleInRadiansToAFewDigitsEndsOnTheAxis) {
+  // `end_angle: 1.5708` is π/2 to 5 digits, 4·10⁻⁶ rad past the pole: its node, 4·10⁻⁶ mm beyond the
+  // axis, is put on it (less than a thousandth of an element), and the angle is said as read in
+  // radians. `1.571` puts it 2·10⁻⁴ mm beyond (13 thousandths of an element): refused, with the
+  // angle that ends on the axis as the fix, not `1.571 deg`.
+  const std::string sphere = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  const std::string arc = "end_angle: 90 deg";
+  const std::string text = replace(sphere, arc, "end_angle: 1.5708");
+  Outcome o = run_cli("check " + write_deck("arc-radians-pole", text));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.balloon.mesh.end_angle': 1.5708 has no unit and is read in radians (1.5708 rad = "
+                          "90 deg); write the unit to be sure"),
+            std::string::npos)
+      << o.output;
+  const tunica::Model m = tunica::read_deck_text(text, "arc-radians-pole.yaml");
+  EXPECT_EQ(m.X[m.parts[0].nodes.back()](0), 0.0);
+  o = expect_check_error(kScratch, "arc-radians-short", replace(sphere, arc, "end_angle: 1.571"), "end_angle: 1.571",
+                         "parts.balloon.mesh.end_angle",
+                         "1.571 has no unit and is read in radians (1.571 rad = 90.01 deg), which puts node 100 at a "
+                         "negative radius r = -0.000203673 mm: a plain number is radians; to end on the axis write "
+                         "`90 deg` (or the angle in radians to more digits, `1.570796327`)");
+  EXPECT_EQ(o.output.find("1.571 deg"), std::string::npos) << o.output;
+}
+
 TEST(BadInput, ABareArcAngleThatBreaksTheMeridianIsNamedWithDegrees) {
   // `end_angle: 90` is 90 rad: the arc turned 14 times and ended in "node 2 has a negative
   // radius" at the mesh, naming no key. The error stands at the angle, says how it was read and
