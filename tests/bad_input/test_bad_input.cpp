@@ -313,6 +313,23 @@ TEST(BadInput, AModulusWithoutAUnitIsValidButSaid) {
   EXPECT_NE(o.output.find("`61.163 kPa`"), std::string::npos) << o.output;
 }
 
+TEST(BadInput, ABarePressureInAnSIDeckIsProposedWithItsValueAsRead) {
+  // In metres and newtons a bare pressure is in Pa: `c: 61163` is 61.163 kPa and `lumen: 26664.5`
+  // 200 mmHg, both right. The unit proposed keeps the value (`61.163 kPa`, not `61163 kPa`); the
+  // number with the unit perhaps meant is offered only as that.
+  std::string text = replace(read_text(kExample), "units: {length: mm, force: N}", "units: {length: m, force: N}");
+  text = replace(text, "c: 61.163 kPa", "c: 61163");
+  text = replace(text, "set: {lumen: 200 mmHg}", "set: {lumen: 26664.5}");
+  const Outcome o = run_cli("check " + write_deck("si-bare-pressure", text));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  for (const char* says :
+       {"key 'materials.aorta.c': 61163 has no unit and is taken in the deck's pressure unit, N/m² (= 61.16 kPa); "
+        "write the unit to be sure, e.g. `61.163 kPa` (this value), or `61163 kPa` if kPa is meant",
+        "key 'steps[1].set.lumen': 26664.5 has no unit and is taken in the deck's pressure unit, N/m² (= 26.66 kPa = "
+        "200 mmHg); write the unit to be sure, e.g. `26.6645 kPa` (this value), or `26664.5 mmHg` if mmHg is meant"})
+    EXPECT_NE(o.output.find(says), std::string::npos) << says << " missing from: " << o.output;
+}
+
 TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
   // `beta: 0.7` is 0.7 rad = 40.1°: in range, so valid, but said at its line and key with how
   // it was read and the fix; so are a meridian arc's and a tube's angles. 0 is the same in
