@@ -270,9 +270,9 @@ ContactPair reverse_pass(const Params& p, ContactPair& c, int master_part, const
   if (facing > 0) std::reverse(r.master.begin(), r.master.end());
   if (const auto [k, s] = first_behind(m, r.nodes, r.master); k >= 0)
     p.fail("passes", fmt::format("`passes: 2`: master node {} of '{}' lies behind the slave '{}' (signed distance {:g} "
-                                 "at the reference state), so the reverse pass would push it through the slave: "
+                                 "{} at the reference state), so the reverse pass would push it through the slave: "
                                  "name as master only the nodes that face the slave, or use `passes: 1`",
-                                 k, c.master_name, p.text("slave"), s));
+                                 k, c.master_name, p.text("slave"), s, m.units.display_unit(Dimension::length)));
   return r;
 }
 
@@ -296,10 +296,10 @@ void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c,
   // and be pushed through the master. Almost always the orientation is the wrong way round.
   if (const auto [k, s] = first_behind(m, c.nodes, c.master); k >= 0)
     p.fail(node.has("master_orientation") ? "master_orientation" : "master",
-           fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} at the reference "
+           fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} {} at the reference "
                        "state; the normal is the master's direction turned clockwise): reverse "
                        "`master_orientation`, or name only the slave nodes that face the master",
-                       k, p.text("slave"), c.master_name, s));
+                       k, p.text("slave"), c.master_name, s, m.units.display_unit(Dimension::length)));
   set_chain_areas(c, m);
 }
 
