@@ -16,6 +16,7 @@
 #include "linalg/compute_threads.hpp"
 #include "core/printable.hpp"
 #include "assembly/pressure_load_checks.hpp"
+#include "assembly/volume_control_checks.hpp"
 #include "mesh/geo_mesher.hpp"
 #include "mesh/gmsh_reader.hpp"
 #include "output/atomic_file.hpp"
@@ -68,6 +69,7 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   if (!quiet) std::printf("threads: %s\n", tunica::compute_threads_summary().c_str());
   tunica::RunWriter writer(model, out, quiet ? nullptr : stdout, resume.get());
   tunica::Analysis analysis(model);
+  tunica::check_volume_control_sides(analysis.system());
   print_warnings(analysis.system());
   tunica::install_stop_handlers();
   const auto t0 = std::chrono::steady_clock::now();
@@ -91,6 +93,8 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
 
 int check(const std::string& deck, const tunica::ReadOptions& options) {
   const tunica::Model model = tunica::read_deck(deck, options);
+  const tunica::System system(model);
+  tunica::check_volume_control_sides(system);
   int elements = 0;
   for (const auto& p : model.parts) elements += p.num_elements();
   std::printf("%s: valid deck: %zu material(s), %zu part(s), %d node(s), %d element(s), %zu boundary set(s), "
@@ -98,7 +102,7 @@ int check(const std::string& deck, const tunica::ReadOptions& options) {
               deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,
               model.boundaries.size(), model.loads.size(), model.steps.size(), model.output.history.size());
   std::fflush(stdout);
-  print_warnings(tunica::System(model));
+  print_warnings(system);
   return 0;
 }
 

@@ -103,6 +103,22 @@ double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, i
   return V;
 }
 
+// The fix depends on whether the load already flips the side: then the normals point out and
+// `flip: true` is what turned the pressure inward.
+std::string inward_load_cause(const PressureLoad& load) {
+  return load.sign < 0 ? "the pressure acts against the elements' normals, which point out of the volume the surface "
+                         "encloses, because the load has `flip: true`"
+                       : "the normals point into the volume the surface encloses";
+}
+
+std::string inward_load_fix(const Model& m, const PressureLoad& load) {
+  return load.sign < 0 ? std::string("remove `flip: true` from the load (or set `flip: false`)")
+         : m.geometry == Geometry::axisymmetric
+             ? "set `flip: true` on the load (or run the meridian the other way: swap the mesh's `from` and `to`, "
+               "or `start_angle` and `end_angle`)"
+             : "set `flip: true` on the load (or reverse the elements' node order in the mesh)";
+}
+
 std::vector<std::string> pressure_load_warnings(const System& system) {
   const Model& m = system.model();
   std::vector<std::string> out;
@@ -133,22 +149,12 @@ std::vector<std::string> pressure_load_warnings(const System& system) {
           "unresisted by anything but the membrane; close the surface, or hold the edge in `boundary`.",
           load.name, part.name, c.edges, c.centre(0), c.centre(1), c.centre(2), tag)));
     }
-    // The fix depends on whether the load already flips the side: then the normals point out and
-    // `flip: true` is what turned the pressure inward.
     if (V < -tiny)
       out.push_back(format_location(load.where, fmt::format(
           "load '{}' pushes its surface (part '{}') inward: the volume on the side its pressure pushes away from is "
           "{:.6g} {} at the reference state, negative, so {}. A pressure inside a vessel or balloon pushes outward: "
           "{}; a pressure from outside is meant this way.",
-          load.name, part.name, V, unit,
-          load.sign < 0 ? "the pressure acts against the elements' normals, which point out of the volume the "
-                          "surface encloses, because the load has `flip: true`"
-                        : "the normals point into the volume the surface encloses",
-          load.sign < 0 ? std::string("remove `flip: true` from the load (or set `flip: false`)")
-          : m.geometry == Geometry::axisymmetric
-              ? "set `flip: true` on the load (or run the meridian the other way: swap the mesh's `from` and `to`, "
-                "or `start_angle` and `end_angle`)"
-              : "set `flip: true` on the load (or reverse the elements' node order in the mesh)")));
+          load.name, part.name, V, unit, inward_load_cause(load), inward_load_fix(m, load))));
     // The enclosed volume matters where it is reported or controlled.
     bool measured = false;
     for (const HistoryRequest& h : m.output.history) measured |= h.quantity == "volume" && h.load == l;

@@ -26,6 +26,13 @@ struct UnheldEdges {
 };
 std::vector<UnheldEdges> unheld_open_edges(const Model& m, int part);
 
+/// Why load's pressure pushes its surface inward (its reference volume is negative): its `flip`, or
+/// normals that point into the volume.
+std::string inward_load_cause(const PressureLoad& load);
+/// The fix for a load that pushes its surface inward: remove `flip: true`, or set it (or reverse the
+/// mesh's orientation).
+std::string inward_load_fix(const Model& m, const PressureLoad& load);
+
 /// One message per suspicious load, each at the load's place in the deck (file:line:column: key),
 /// naming the load, what was measured (in the deck's length unit) and the key that fixes it.
 std::vector<std::string> pressure_load_warnings(const System& system);

@@ -23,6 +23,7 @@
 #include "io/deck_shell_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
+#include "io/meridian_checks.hpp"
 #include "io/unitless_values.hpp"
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
@@ -122,7 +123,9 @@ const ComponentSpec& step_spec() {
        structured("volume_control", "map",
                   "`{load: <pressure load>, volume: <target>}`: that load's pressure becomes an unknown and "
                   "the enclosed volume of its surface is ramped from its value at the start of the step to "
-                  "the target (follows a pressure maximum)"),
+                  "the target (follows a pressure maximum; axisymmetric and 3-D models). The load's volume must be "
+                  "positive at the reference state: volume control of a load that pushes its surface inward is an "
+                  "error"),
        structured("solver", "map", "overrides of the top-level `solver` keys for this step")}};
   return s;
 }
@@ -201,75 +204,6 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
 }
 
 std::vector<std::string> names(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
-
-/// A generated meridian that is wrong in a way an angle written without a unit explains
-/// (`end_angle: 90` is 90 rad): if the mesh has such angles, the error stands at the first one's
-/// key, says `what` it did and proposes degrees, saying whether the meridian would then stay at
-/// r ≥ 0; else it returns.
-void fail_at_bare_angle(const DeckNode& mesh, const MeridianType& type, const Params& mp, const std::string& what) {
-  std::vector<std::string> bare;  // angle keys given as plain numbers other than 0
-  for (const ParamSpec& spec : type.spec.params) {
-    double value = 0;
-    std::string unit;
-    if (spec.dim == Dimension::angle && mesh.has(spec.name) && mesh[spec.name].is_scalar() &&
-        split_quantity(mesh[spec.name].as_string(), value, unit) && unit.empty() && value != 0)
-      bare.push_back(spec.name);
-  }
-  if (bare.empty()) return;
-  // Read in degrees instead, would the meridian stay at r ≥ 0?
-  Params degrees = mp;
-  for (const std::string& k : bare) {
-    Params::Value v;
-    v.nums = {mp.number(k) * std::numbers::pi / 180};
-    v.written = mp.written(k);
-    v.loc = mp.where(k);
-    degrees.set(k, std::move(v));
-  }
-  bool fits = true;
-  try {
-    for (const Eigen::Vector2d& x : type.make(degrees)) fits = fits && x(0) >= 0;
-  } catch (const std::exception&) {
-    fits = false;
-  }
-  const std::string& key = bare.front();
-  const std::string w = mp.written(key);
-  std::string others;
-  for (std::size_t k = 1; k < bare.size(); ++k)
-    others += fmt::format("{}`{} deg` for `{}`", others.empty() ? " (and " : ", ", mp.written(bare[k]), bare[k]);
-  if (!others.empty()) others += ", also without a unit)";
-  mesh[key].fail(fmt::format(
-      "{} has no unit and is read in radians ({} rad = {:.4g} deg), which {}: a plain number is radians; {}{}", w, w,
-      mp.number(key) * 180 / std::numbers::pi, what,
-      fits ? fmt::format("for degrees write `{} deg`", w)
-           : fmt::format("write the unit, e.g. `{} deg` (in degrees the meridian would still reach r < 0: check "
-                         "`center` and `radius` too)",
-                         w),
-      others));
-}
-
-/// Refuses a generated meridian that turns more than once (an arc of more than 360°: its nodes
-/// overlap) or reaches r < 0, at a bare angle's key if one explains it (fail_at_bare_angle).
-void check_meridian(const DeckNode& mesh, const MeridianType& type, const Params& mp, const Meridian& points,
-                    const UnitSystem& units) {
-  if (mp.has("start_angle") && mp.has("end_angle")) {
-    const double span = std::abs(mp.number("end_angle") - mp.number("start_angle")) * 180 / std::numbers::pi;
-    if (span > 360 * (1 + 1e-9)) {
-      fail_at_bare_angle(mesh, type, mp, fmt::format("makes the arc span {:.6g} deg, more than a full turn", span));
-      mesh["end_angle"].fail(fmt::format("the arc spans {:.6g} deg, more than a full turn: its nodes would overlap "
-                                         "(an arc from `start_angle` to `end_angle` covers at most 360 deg)",
-                                         span));
-    }
-  }
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (points[i](0) < 0) {
-      const std::string at =
-          fmt::format("node {} at a negative radius r = {:g} {}", i, points[i](0), units.display_unit(Dimension::length));
-      fail_at_bare_angle(mesh, type, mp, "puts " + at);
-      mesh.fail(fmt::format("the meridian has {}: an axisymmetric meridian stays at r ≥ 0 (check `center`, `radius` "
-                            "and the angles, or `from` and `to`)",
-                            at));
-    }
-}
 
 void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
   const DeckNode mesh = node.required("mesh");
@@ -652,6 +586,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       if (const int late = m.loads[s.volume_control.load].part; static_cast<int>(m.steps.size()) < m.parts[late].enter_step)
         vc["load"].fail("load '" + load + "' acts on part '" + m.parts[late].name + "', which has not entered yet");
       s.volume_control.target = read_quantity(vc.required("volume"), Dimension::volume, m.units);
+      s.volume_control.where = vc["volume"].where();
       if (!(s.volume_control.target > 0)) vc["volume"].fail("the target volume must be positive");
     }
     m.steps.push_back(std::move(s));

@@ -7,6 +7,7 @@
 
 #include "contact/axisym_contact.hpp"
 #include "io/deck_names.hpp"
+#include "io/rigid_contact_side.hpp"
 #include "contact/contact_search.hpp"
 
 namespace tunica {
@@ -16,7 +17,8 @@ const ComponentSpec& cylinder_spec() {
       "rigid_surfaces", "cylinder",
       "Axisymmetric models: a rigid cylinder r = R_c about the z axis, unbounded in z, fixed. The slave "
       "nodes of a `contact` pair are kept outside it (r ≥ R_c, e.g. a balloon on a catheter) or inside it "
-      "(r ≤ R_c, e.g. a rigid tube around an artery).",
+      "(r ≤ R_c, e.g. a rigid tube around an artery). A slave that starts behind it (on the other side) is an "
+      "error.",
       {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
        required(positive(number("radius", Dimension::length, "radius R_c"))),
        required(one_of(text("side", "the side where the slave nodes belong"), {"outside", "inside"}))}};
@@ -29,7 +31,8 @@ const ComponentSpec& polyline_spec() {
       "Axisymmetric models: a rigid open polyline in the (r, z) meridian plane (a surface of revolution), "
       "fixed. Its contact normal is the direction of travel turned clockwise: order the points so that "
       "the slave nodes lie on the right of the direction of travel (e.g. from larger to smaller r for a "
-      "plane z = const with the slave above it). Beyond the ends of the chain there is no contact.",
+      "plane z = const with the slave above it). Beyond the ends of the chain there is no contact. A slave that "
+      "starts behind it (on the left of the direction of travel) is an error.",
       {required(one_of(text("type", "surface type"), {"cylinder", "polyline"})),
        required(structured("points", "list", "at least 2 points `[r, z]` (lengths), e.g. `[[2 mm, 0], [0.5 mm, 0]]`"))}};
   return s;
@@ -267,9 +270,9 @@ ContactPair reverse_pass(const Params& p, ContactPair& c, int master_part, const
   if (facing > 0) std::reverse(r.master.begin(), r.master.end());
   if (const auto [k, s] = first_behind(m, r.nodes, r.master); k >= 0)
     p.fail("passes", fmt::format("`passes: 2`: master node {} of '{}' lies behind the slave '{}' (signed distance {:g} "
-                                 "at the reference state), so the reverse pass would push it through the slave: "
+                                 "{} at the reference state), so the reverse pass would push it through the slave: "
                                  "name as master only the nodes that face the slave, or use `passes: 1`",
-                                 k, c.master_name, p.text("slave"), s));
+                                 k, c.master_name, p.text("slave"), s, m.units.display_unit(Dimension::length)));
   return r;
 }
 
@@ -293,10 +296,10 @@ void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c,
   // and be pushed through the master. Almost always the orientation is the wrong way round.
   if (const auto [k, s] = first_behind(m, c.nodes, c.master); k >= 0)
     p.fail(node.has("master_orientation") ? "master_orientation" : "master",
-           fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} at the reference "
+           fmt::format("slave node {} of '{}' lies behind the master '{}' (signed distance {:g} {} at the reference "
                        "state; the normal is the master's direction turned clockwise): reverse "
                        "`master_orientation`, or name only the slave nodes that face the master",
-                       k, p.text("slave"), c.master_name, s));
+                       k, p.text("slave"), c.master_name, s, m.units.display_unit(Dimension::length)));
   set_chain_areas(c, m);
 }
 
@@ -336,6 +339,7 @@ void read_contacts(const DeckNode& deck, Model& m) {
         p.fail("rigid", "undefined rigid surface '" + r + "' " + known_names(r, names_of(m.rigid_surfaces), "rigid surfaces"));
       c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
       read_rigid_slave(p, c, m);
+      check_rigid_side(p, c, m);
     } else {
       int master_part = -1;
       read_deformable_pair(node, p, c, m, &master_part);

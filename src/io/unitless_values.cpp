@@ -21,16 +21,23 @@ bool warn_if_unitless(const DeckNode& v, Dimension dim, Model& m, bool load_targ
                                w, w, written * 180 / std::numbers::pi, w, w)));
     return true;
   }
+  // The value as read, spelt with a unit, keeps the model; the number with the unit a user most
+  // likely meant (mmHg for a load, kPa for a modulus) is offered only where it changes the value.
   const double p = m.units.to_internal(written, "", Dimension::pressure);
   const std::string deck_unit = m.units.display_unit(Dimension::pressure);
   const double kpa = m.units.from_internal(p, "kPa", Dimension::pressure);
+  const std::string meant = load_target ? "mmHg" : "kPa";
+  const double as_meant = m.units.to_internal(written, meant, Dimension::pressure);
+  const std::string other =
+      std::abs(as_meant - p) > 1e-9 * std::abs(p) ? fmt::format(", or `{} {}` if {} is meant", w, meant, meant) : "";
   m.warnings.push_back(format_location(
       v.where(), load_target ? fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = "
-                                           "{:.4g} mmHg); write the unit to be sure, e.g. `{} mmHg` or `{} kPa`",
-                                           w, deck_unit, kpa, m.units.from_internal(p, "mmHg", Dimension::pressure), w, w)
+                                           "{:.4g} mmHg); write the unit to be sure, e.g. `{:.10g} kPa` (this value){}",
+                                           w, deck_unit, kpa, m.units.from_internal(p, "mmHg", Dimension::pressure), kpa,
+                                           other)
                              : fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa); "
-                                           "write the unit to be sure, e.g. `{} kPa` or `{} MPa`",
-                                           w, deck_unit, kpa, w, w)));
+                                           "write the unit to be sure, e.g. `{:.10g} kPa` (this value){}",
+                                           w, deck_unit, kpa, kpa, other)));
   return true;
 }
 

@@ -1,5 +1,6 @@
 #include "mesh/meridian.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tunica {
@@ -12,10 +13,14 @@ Meridian line_meridian(const Eigen::Vector2d& a, const Eigen::Vector2d& b, int n
 
 Meridian arc_meridian(const Eigen::Vector2d& center, double rho, double phi0, double phi1, int n) {
   Meridian m(n + 1);
+  // A pole on the axis lies exactly on it; so does a node less than a thousandth of an element
+  // beyond it, as written angles put it (1.5708 for π/2 is 4·10⁻⁶ rad past the pole), the same
+  // tolerance as a tube's columns on the planes x = 0, y = 0 (surface_generators.cpp).
+  const double beyond = std::max(1e-12 * rho, kOnAxisFraction * rho * std::abs(phi1 - phi0) / n);
   for (int i = 0; i <= n; ++i) {
     const double phi = phi0 + (phi1 - phi0) * (static_cast<double>(i) / n);
     double r = center(0) + rho * std::cos(phi);
-    if (std::abs(r) < 1e-12 * rho) r = 0.0;  // a pole on the axis lies exactly on it
+    if (std::abs(r) < 1e-12 * rho || (r < 0 && r >= -beyond)) r = 0.0;
     m[i] = Eigen::Vector2d(r, center(1) + rho * std::sin(phi));
   }
   return m;
@@ -38,7 +43,8 @@ const std::map<std::string, MeridianType>& meridian_types() {
       {"arc",
        {ComponentSpec{"mesh", "arc",
                       "Circular-arc meridian about `center`; angles from the +r axis towards +z "
-                      "(−90 deg = lower pole, 0 = equator, 90 deg = upper pole).",
+                      "(−90 deg = lower pole, 0 = equator, 90 deg = upper pole). A node less than a thousandth "
+                      "of an element beyond the axis lies on it (`end_angle: 1.5708`).",
                       {required(numbers("center", Dimension::length, 2, "centre [r, z]")),
                        required(positive(number("radius", Dimension::length, "arc radius"))),
                        required(number("start_angle", Dimension::angle, "angle of the first node")),

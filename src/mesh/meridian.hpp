@@ -25,8 +25,13 @@ const std::map<std::string, MeridianType>& meridian_types();
 
 /// Straight line from `a` to `b` in n equal elements.
 Meridian line_meridian(const Eigen::Vector2d& a, const Eigen::Vector2d& b, int n);
+/// A node of a generated arc at most this fraction of an element beyond the axis (r < 0) is put
+/// on it (r = 0).
+constexpr double kOnAxisFraction = 1e-3;
+
 /// Circular arc about `center` with radius ρ from angle φ0 to φ1 (radians,
-/// measured from the +r axis towards +z) in n equal elements.
+/// measured from the +r axis towards +z) in n equal elements; a node at most kOnAxisFraction of
+/// an element beyond the axis lies on it.
 Meridian arc_meridian(const Eigen::Vector2d& center, double rho, double phi0, double phi1, int n);
 
 }  // namespace tunica

@@ -204,6 +204,7 @@ struct ContactPair {
 struct VolumeControl {
   int load = -1;
   double target = 0;
+  SourceLocation where;  ///< the step's `volume_control.volume`
 };
 
 /// Newton and increment-control settings.

@@ -58,7 +58,7 @@ std::vector<RigidMotion> free_rigid_motions(const Model& m, const std::vector<in
   return out;
 }
 
-std::vector<UnheldBody> unheld_rigid_motions(const Model& m) {
+std::vector<UnheldBody> unheld_rigid_motions(const Model& m, bool contact_holds) {
   const int parts = static_cast<int>(m.parts.size());
   // Bodies: parts joined by a shared node.
   std::vector<int> parent(parts), owner(m.num_nodes(), -1);
@@ -89,7 +89,7 @@ std::vector<UnheldBody> unheld_rigid_motions(const Model& m) {
   const std::string none =
       m.boundaries.empty() ? " (the deck has no boundary conditions yet: add them in a `boundary` section)" : "";
   for (int body = 0; body < parts; ++body) {
-    if (find(parent, body) != body || in_contact[body]) continue;
+    if (find(parent, body) != body || (contact_holds && in_contact[body])) continue;
     std::vector<int> nodes, members;
     std::string names;
     for (int p = 0; p < parts; ++p)

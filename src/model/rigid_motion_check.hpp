@@ -37,7 +37,8 @@ struct UnheldBody {
 /// One message per body that the boundary conditions leave free to move rigidly: 3-D, the
 /// free_rigid_motions; axisymmetric, the translation along z. Each names what to hold
 /// (model/rigid_motion_fix.hpp). Bodies in a contact pair are left out (the contact may hold
-/// them). Empty when every body is held.
-std::vector<UnheldBody> unheld_rigid_motions(const Model& m);
+/// them) unless `contact_holds` is false (what would hold them if they lost contact). Empty when
+/// every body is held.
+std::vector<UnheldBody> unheld_rigid_motions(const Model& m, bool contact_holds = true);
 
 }  // namespace tunica

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/bounded_file.hpp"
+#include "assembly/contact_penetration.hpp"
 #include "core/printable.hpp"
 #include "elements/membrane_compression.hpp"
 #include "linalg/compute_threads.hpp"
@@ -181,6 +182,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   last_framed_ = wants_frame(info) || (model_.output.vtk && stop_requested());
   if (last_framed_) write_frame(analysis, info);
   note_compression(analysis, info);
+  note_penetration(analysis, info);
   last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}, model_.fingerprint};
   for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
     if (f->is_open()) last_->files.push_back(f->record());
@@ -217,6 +219,20 @@ void RunWriter::note_compression(const Analysis& analysis, const IncrementInfo& 
                  "`compressed_fraction` and the ParaView field `compressed` show where.\n",
                  terminal_safe(part.name).c_str(), 100 * f, info.step, terminal_safe(info.step_name).c_str(),
                  info.increment);
+  }
+}
+
+void RunWriter::note_penetration(const Analysis& analysis, const IncrementInfo& info) {
+  if (info.step == 0) return;  // the reference state: the deck reader checks the sides
+  penetration_noted_.resize(model_.contacts.size(), 0);
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    if (penetration_noted_[c]) continue;
+    const std::string w =
+        far_penetration_warning(analysis.system(), analysis.displacement(), info.step - 1, static_cast<int>(c),
+                                fmt::format("at step {} '{}', increment {}", info.step, info.step_name, info.increment));
+    if (w.empty()) continue;
+    penetration_noted_[c] = 1;
+    std::fprintf(stderr, "tunica: warning: %s\n", terminal_safe(w).c_str());
   }
 }
 

@@ -58,6 +58,9 @@ private:
   /// The first time a membrane part is in compression over more than 1 % of its reference area,
   /// a note on standard error (elements/membrane_compression.hpp), once per part.
   void note_compression(const Analysis& analysis, const IncrementInfo& info);
+  /// The first time a contact pair's penetration is far beyond the penalty's scale, a warning on
+  /// standard error at the pair (assembly/contact_penetration.hpp), once per pair.
+  void note_penetration(const Analysis& analysis, const IncrementInfo& info);
 
   const Model& model_;
   std::string dir_;
@@ -72,6 +75,7 @@ private:
   IncrementInfo last_info_;            ///< the last converged increment
   bool last_framed_ = false;           ///< it has its ParaView frame
   std::vector<char> compression_noted_;  ///< per part
+  std::vector<char> penetration_noted_;  ///< per contact pair
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
 };
 

@@ -5,7 +5,62 @@
 #include <cmath>
 #include <limits>
 
+#include "model/rigid_motion_check.hpp"
+
 namespace tunica {
+
+namespace {
+
+/// The bodies that nothing holds against rigid motion in step `step` (0-based; a body counts once
+/// one of its parts has entered), as the deck's warnings name them; empty if none.
+std::string free_body_hint(const Model& model, int step) {
+  std::string out;
+  for (const UnheldBody& b : unheld_rigid_motions(model)) {
+    bool active = false;
+    for (int p : b.parts) active = active || model.part_active(p, step);
+    if (active) out += (out.empty() ? "" : "; ") + b.message;
+  }
+  return out.empty() ? out : "the tangent is singular because a body is free to move rigidly (as `tunica check` warns): " + out + ".";
+}
+
+/// A singular tangent of a model held against rigid motion, at a state Newton reached: no
+/// stiffness left against the load. Names the loads the step raises, what the failed increment
+/// tried and the step's target, the remedies, and the bodies held only by contact.
+std::string held_singular_hint(const Model& model, const Step& step, const StepTrace& converged,
+                               const LoadState& attempted) {
+  const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
+  const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
+  std::string tried, control;
+  for (std::size_t l = 0; l < model.loads.size() && l < attempted.pressure.size(); ++l) {
+    const auto target = step.targets.find(model.loads[l].name);
+    if (target == step.targets.end()) continue;
+    tried += fmt::format(" Load '{}' tried {:.4g} kPa = {:.4g} mmHg (the step's target: {:.4g} kPa = {:.4g} mmHg).",
+                         model.loads[l].name, kpa(attempted.pressure[l]), mmhg(attempted.pressure[l]),
+                         kpa(target->second), mmhg(target->second));
+    if (control.empty())
+      control = fmt::format(", and to pass a pressure maximum control the volume (`volume_control: {{load: {}, volume: "
+                            "<enclosed volume>}}`, user guide §3.1)",
+                            model.loads[l].name);
+  }
+  if (converged.count() == 1) tried += " No increment of this step converged, down to the smallest allowed.";
+  // Bodies that only contact holds: once out of contact nothing holds them.
+  std::string contact;
+  const std::vector<UnheldBody> free = unheld_rigid_motions(model);
+  for (const UnheldBody& b : unheld_rigid_motions(model, false)) {
+    bool listed = false;
+    for (const UnheldBody& f : free) listed = listed || f.parts == b.parts;
+    if (!listed) contact += " Held by contact only: " + b.message + ", once it is out of contact.";
+  }
+  return fmt::format(
+      "the model is held against rigid-body motion (`tunica check` finds no body free to move), so a singular "
+      "tangent at a state Newton reached means that no stiffness is left against the load: likely a load beyond "
+      "what the structure carries, with no equilibrium state at it (a limit point).{} Check the value and unit of "
+      "the load against the pressure the structure can carry; to follow the structure up to its limit take smaller "
+      "increments (`increments`){}.{}",
+      tried, control, contact);
+}
+
+}  // namespace
 
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
                           const LoadState& attempted) {
@@ -14,15 +69,20 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
   // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.
-  if (last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3 &&
-      last.residual_falling && last.last_residual <= 1e-3 * last.last_force_scale)
-    add(fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
-                    "raise `max_iterations` in `solver` (now {}).",
-                    last.last_relative_residual, step.solver.max_iterations));
+  const bool still_converging = last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3 &&
+                                last.residual_falling && last.last_residual <= 1e-3 * last.last_force_scale;
+  const std::string more_iterations =
+      fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
+                  "raise `max_iterations` in `solver` (now {}).",
+                  last.last_relative_residual, step.solver.max_iterations);
+  // One hint for one failure: a pressure at the largest the structure carries has no state to
+  // converge to however many iterations are allowed, so that hint replaces raising the limit;
+  // a curve that flattened but still rises leaves the slow convergence as the evidence.
+  std::string limit, rising;
   // A pressure the step raises, under pressure control, whose p–V curve flattens: theory manual §7.1.
+  const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
+  const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
   if (step.volume_control.load < 0 && converged.count() >= 3) {
-    const auto kpa = [&](double p) { return model.units.from_internal(p, "kPa", Dimension::pressure); };
-    const auto mmhg = [&](double p) { return model.units.from_internal(p, "mmHg", Dimension::pressure); };
     for (std::size_t l = 0; l < model.loads.size(); ++l) {
       const auto target = step.targets.find(model.loads[l].name);
       const LoadState& a = converged.first(0);
@@ -58,13 +118,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       const double tried = attempted.pressure.size() > l ? attempted.pressure[l] : end.pressure[l];
       const bool beyond = sense * tried >= sense * peak;
       if (beyond) {
-        add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
-                        "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at a "
-                        "maximum (a limit point), beyond which no state carries a higher pressure. A step with "
-                        "`volume_control: {{load: {}, volume: <enclosed volume>}}` passes it, controlling the enclosed "
-                        "volume instead (user guide §3.1, volume control).",
-                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]),
-                        model.loads[l].name));
+        // dp/dV changed sign: a maximum passed; still positive: a maximum or an asymptote ahead.
+        limit += fmt::format(
+            " Hint: the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of its "
+            "value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at the largest the "
+            "structure carries ({}), and no state carries the {:.4g} kPa the failed increment tried{}. Lower the "
+            "load below about {:.4g} kPa, or control the enclosed volume instead: a step with `volume_control: "
+            "{{load: {}, volume: <enclosed volume>}}` passes a maximum and approaches an asymptote from below "
+            "(user guide §3.1, volume control).",
+            model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]),
+            now / first <= 0 ? "a maximum of the curve, a limit point, already passed"
+                             : "a maximum of the curve, a limit point, or an asymptote that it approaches",
+            kpa(tried), still_converging ? " (raising `max_iterations` would not help)" : "", kpa(end.pressure[l]),
+            model.loads[l].name);
       } else {
         const std::string trend =
             std::isfinite(peak) ? fmt::format("its trend puts a maximum near {:.4g} kPa, above the {:.4g} kPa the failed "
@@ -77,15 +143,27 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
                              : "look at newton.csv (active_changes) and history.csv for where the residual sits, e.g. "
                                "at contact (no ParaView frames were written, `output.vtk` is false: set it to true to "
                                "see the last converged state)";
-        add(fmt::format("the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
-                        "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. "
-                        "The failure is likely not a limit point of the pressure but a local one, which "
-                        "`volume_control` need not pass: {} (user guide §6).",
-                        model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend,
-                        look));
+        rising += fmt::format(
+            " Hint: the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of "
+            "its value at the step's start, at {:.4g} kPa = {:.4g} mmHg) but the pressure still rises: {}. The "
+            "failure is likely not a limit point of the pressure but a local one, which `volume_control` need not "
+            "pass: {} (user guide §6).",
+            model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]), trend, look);
       }
     }
   }
+  if (last.singular) {
+    // Free to move rigidly: the cause whatever the curve says. Held: a load with no equilibrium,
+    // unless the curve says the pressure still rises there.
+    if (const std::string free = free_body_hint(model, attempted.step); !free.empty()) return " Hint: " + free;
+    if (!limit.empty()) return limit;
+    if (!rising.empty()) return rising;
+    add(held_singular_hint(model, step, converged, attempted));
+    return hints;
+  }
+  if (!limit.empty()) return limit;
+  if (still_converging) add(more_iterations);
+  else hints += rising;
   return hints;
 }
 

@@ -10,16 +10,27 @@
 
 namespace tunica {
 
-/// Empty, or one or more sentences, each naming the deck key that would help:
-///  - Newton was still converging at `max_iterations` (last relative residual below 1e-3, and the
-///    absolute residual ‖R‖ falling over the last two iterations and below 1e-3 of the forces
-///    that cancel in it): raise `max_iterations`;
+/// Empty, or one hint (a sentence or more naming the deck key that would help), chosen from the
+/// evidence so that a failure gets one coherent explanation:
+///  - a singular tangent (NewtonResult::singular) of a model with a body that nothing holds
+///    against rigid motion in this step (model/rigid_motion_check.hpp): that body and its hold;
 ///  - the step raises a pressure without volume control and the pressure–volume curve of that
 ///    load flattened over the step's converged increments (dp/dV of the last below a fifth of
 ///    the first's, or negative): if the pressure the failed increment tried lies at or beyond
 ///    the maximum that the curve's trend predicts (theory manual (7.9); the maximum passed when
-///    dp/dV has changed sign), a limit point, which `volume_control` passes; otherwise the
-///    pressure still rises there, and the hint says so rather than suggest volume control.
+///    dp/dV has changed sign), the largest pressure the structure carries (a maximum or an
+///    asymptote): lower the load, or `volume_control` — whatever Newton's residual did, since
+///    no state exists to converge to (raising `max_iterations` would not help, and is said so
+///    when Newton was still converging);
+///  - else a singular tangent of a held model: no stiffness left against the load, likely a load
+///    beyond what the structure carries (the loads tried and their targets; smaller increments,
+///    `volume_control`; bodies held by contact alone), unless the curve says the pressure still
+///    rises there (next);
+///  - else Newton was still converging at `max_iterations` (last relative residual below 1e-3,
+///    and the absolute residual ‖R‖ falling over the last two iterations and below 1e-3 of the
+///    forces that cancel in it): raise `max_iterations`;
+///  - else a curve that flattened short of its predicted maximum: the pressure still rises there,
+///    and the failure is likely a local one, which volume control need not pass.
 /// `converged`: the step's start and its converged increments' states (also those before a
 /// restart); `attempted`: the loads of the failed increment.
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,

@@ -168,9 +168,9 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
     if (!solved) {
       on_iteration(rec);
       const std::string refusal = solver.refusal();
-      result.failure = refusal.empty()
-                           ? "the tangent matrix is singular (is the model held against rigid-body motion?)"
-                           : "the linear solver could not factorize the tangent: " + refusal;
+      result.singular = refusal.empty();
+      result.failure = refusal.empty() ? "the tangent matrix is singular"
+                                       : "the linear solver could not factorize the tangent: " + refusal;
       return result;
     }
     on_iteration(rec);

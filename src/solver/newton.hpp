@@ -46,6 +46,9 @@ struct NewtonResult {
   double last_force_scale = 0;  ///< the forces that cancel in that R (NonlinearProblem::evaluate)
   bool residual_falling = false;  ///< ‖R‖ fell in each of the last two iterations
   int perturbed = 0;  ///< iterations whose singular tangent was solved with a perturbed diagonal
+  /// The attempt stopped on a singular tangent (`failure` says so; why, the model's holds or the
+  /// load, is for the caller to tell: solver/failure_hints.hpp).
+  bool singular = false;
 };
 
 /// Iterates on the problem's state until the tests of `settings` hold, (7.2):

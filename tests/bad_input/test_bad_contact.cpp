@@ -105,3 +105,55 @@ TEST(BadContact, HistoryOfAnUnknownContactPair) {
   expect_check_error(kScratch, "history-contact", text, "contact: nope}", "output.history[0].contact",
                      "undefined contact pair 'nope'");
 }
+
+// A rigid surface given the wrong way round: the slave starts behind it, and the penalty would push
+// it through in the first increment. Refused at the pair's `rigid`, with the depth and the fix.
+TEST(BadContact, SlaveBehindARigidCylinder) {
+  // The wall (r = 0.763 mm) inside the sleeve (r = 1.2 mm), which `side: outside` puts behind it.
+  const std::string text = replace(base_deck(), "side: inside}", "side: outside}");
+  const Outcome o = expect_check_error(kScratch, "cylinder-wrong-side", text, "wall_sleeve: {slave: wall, rigid: sleeve",
+                                       "contact.wall_sleeve.rigid",
+                                       "contact pair 'wall_sleeve': 2 of the 2 slave nodes of 'wall' that face the "
+                                       "rigid surface 'sleeve' lie behind it at the reference state, the deepest by "
+                                       "0.437 mm");
+  EXPECT_NE(o.output.find("`side: outside` keeps the slave at r ≥ 1.2 mm: if it belongs inside the cylinder, write `side: "
+                 "inside` in rigid_surfaces.sleeve (line " +
+                                 std::to_string(line_of(text, "  sleeve: {type: cylinder")) + ")"),
+            std::string::npos)
+      << o.output;
+}
+
+TEST(BadContact, SlaveBehindARigidPolylineListedTheWrongWay) {
+  // A sleeve as a polyline running towards +z faces +r: the wall inside it is behind it.
+  std::string text = replace(base_deck(), "tip: {type: polyline, points: [[2 mm, 0], [0.5 mm, 0]]}",
+                             "tip: {type: polyline, points: [[1.2 mm, -1 mm], [1.2 mm, 2 mm]]}");
+  text = replace(text, "wall_tip: {slave: wall.start, rigid: tip", "wall_tip: {slave: wall, rigid: tip");
+  const Outcome o = expect_check_error(kScratch, "polyline-wrong-way", text, "wall_tip: {slave: wall, rigid: tip",
+                                       "contact.wall_tip.rigid",
+                                       "contact pair 'wall_tip': 2 of the 2 slave nodes of 'wall' that face the rigid "
+                                       "surface 'tip' lie behind it at the reference state, the deepest by 0.437 mm");
+  EXPECT_NE(o.output.find("list the points of rigid_surfaces.tip (line " + std::to_string(line_of(text, "  tip: {type: polyline")) +
+                                 ") in the reverse order, `points: [[1.2 mm, 2 mm], [1.2 mm, -1 mm]]`"),
+            std::string::npos)
+      << o.output;
+}
+
+TEST(BadContact, SlaveJustBehindARigidSurfaceEverywhere) {
+  // Behind by a hundredth of the element (1 mm) only, but every node that faces the surface is:
+  // the wrong side, not round-off.
+  const std::string text = replace(base_deck(), "points: [[2 mm, 0], [0.5 mm, 0]]", "points: [[2 mm, 0.01 mm], [0.5 mm, 0.01 mm]]");
+  expect_check_error(kScratch, "polyline-just-behind", text, "wall_tip: {slave: wall.start, rigid: tip",
+                     "contact.wall_tip.rigid",
+                     "1 of the 1 slave nodes of 'wall.start' that face the rigid surface 'tip' lie behind it at the "
+                     "reference state, the deepest by 0.01 mm");
+}
+
+TEST(BadContact, SlaveOnTheSurfaceOrAFewNodesJustBehindIsAccepted) {
+  // The base deck's wall.start lies on the plane z = 0 (signed distance 0). A plane tilted so that
+  // one of the wall's two nodes is a hundredth of an element behind and the other in front: a
+  // minority just behind, which contact corrects, not the wrong side.
+  std::string text = replace(base_deck(), "points: [[2 mm, 0], [0.5 mm, 0]]", "points: [[0.793 mm, -1 mm], [0.733 mm, 2 mm]]");
+  text = replace(text, "wall_tip: {slave: wall.start, rigid: tip", "wall_tip: {slave: wall, rigid: tip");
+  const Outcome o = run_cli("check " + write_deck("few-just-behind", text));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}

@@ -140,7 +140,7 @@ TEST(BadDeformableContact, SlaveBehindTheMaster) {
   // The artery meshed towards +z faces +r: as given, the balloon inside it is behind it.
   expect_error("behind", "master_orientation: reversed,", "master_orientation: as_given,",
                "contact.press.master_orientation",
-               "slave node 0 of 'balloon' lies behind the master 'artery' (signed distance -0.2 at the reference state");
+               "slave node 0 of 'balloon' lies behind the master 'artery' (signed distance -0.2 mm at the reference state");
   expect_error("behind-default", "master: artery, master_orientation: reversed,", "master: artery,", "contact.press.master",
                "reverse `master_orientation`");
 }

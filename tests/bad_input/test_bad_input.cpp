@@ -314,6 +314,23 @@ TEST(BadInput, AModulusWithoutAUnitIsValidButSaid) {
   EXPECT_NE(o.output.find("`61.163 kPa`"), std::string::npos) << o.output;
 }
 
+TEST(BadInput, ABarePressureInAnSIDeckIsProposedWithItsValueAsRead) {
+  // In metres and newtons a bare pressure is in Pa: `c: 61163` is 61.163 kPa and `lumen: 26664.5`
+  // 200 mmHg, both right. The unit proposed keeps the value (`61.163 kPa`, not `61163 kPa`); the
+  // number with the unit perhaps meant is offered only as that.
+  std::string text = replace(read_text(kExample), "units: {length: mm, force: N}", "units: {length: m, force: N}");
+  text = replace(text, "c: 61.163 kPa", "c: 61163");
+  text = replace(text, "set: {lumen: 200 mmHg}", "set: {lumen: 26664.5}");
+  const Outcome o = run_cli("check " + write_deck("si-bare-pressure", text));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  for (const char* says :
+       {"key 'materials.aorta.c': 61163 has no unit and is taken in the deck's pressure unit, N/m² (= 61.16 kPa); "
+        "write the unit to be sure, e.g. `61.163 kPa` (this value), or `61163 kPa` if kPa is meant",
+        "key 'steps[1].set.lumen': 26664.5 has no unit and is taken in the deck's pressure unit, N/m² (= 26.66 kPa = "
+        "200 mmHg); write the unit to be sure, e.g. `26.6645 kPa` (this value), or `26664.5 mmHg` if mmHg is meant"})
+    EXPECT_NE(o.output.find(says), std::string::npos) << says << " missing from: " << o.output;
+}
+
 TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
   // `beta: 0.7` is 0.7 rad = 40.1°: in range, so valid, but said at its line and key with how
   // it was read and the fix; so are a meridian arc's and a tube's angles. 0 is the same in
@@ -343,6 +360,30 @@ TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {
   EXPECT_EQ(o.exit_code, 0) << o.output;
   EXPECT_NE(o.output.find("key 'parts.wall.mesh.sector': 1.5707963267948966 has no unit and is read in radians"), std::string::npos)
       << o.output;
+}
+
+TEST(BadInput, AnArcAngleInRadiansToAFewDigitsEndsOnTheAxis) {
+  // `end_angle: 1.5708` is π/2 to 5 digits, 4·10⁻⁶ rad past the pole: its node, 4·10⁻⁶ mm beyond the
+  // axis, is put on it (less than a thousandth of an element), and the angle is said as read in
+  // radians. `1.571` puts it 2·10⁻⁴ mm beyond (13 thousandths of an element): refused, with the
+  // angle that ends on the axis as the fix, not `1.571 deg`.
+  const std::string sphere = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml");
+  const std::string arc = "end_angle: 90 deg";
+  const std::string text = replace(sphere, arc, "end_angle: 1.5708");
+  Outcome o = run_cli("check " + write_deck("arc-radians-pole", text));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'parts.balloon.mesh.end_angle': 1.5708 has no unit and is read in radians (1.5708 rad = "
+                          "90 deg); write the unit to be sure"),
+            std::string::npos)
+      << o.output;
+  const tunica::Model m = tunica::read_deck_text(text, "arc-radians-pole.yaml");
+  EXPECT_EQ(m.X[m.parts[0].nodes.back()](0), 0.0);
+  o = expect_check_error(kScratch, "arc-radians-short", replace(sphere, arc, "end_angle: 1.571"), "end_angle: 1.571",
+                         "parts.balloon.mesh.end_angle",
+                         "1.571 has no unit and is read in radians (1.571 rad = 90.01 deg), which puts node 100 at a "
+                         "negative radius r = -0.000203673 mm: a plain number is radians; to end on the axis write "
+                         "`90 deg` (or the angle in radians to more digits, `1.570796327`)");
+  EXPECT_EQ(o.output.find("1.571 deg"), std::string::npos) << o.output;
 }
 
 TEST(BadInput, ABareArcAngleThatBreaksTheMeridianIsNamedWithDegrees) {

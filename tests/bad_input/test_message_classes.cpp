@@ -282,6 +282,44 @@ TEST(MessageClasses, VolumeAxisThatDoesNotFitTheOpenEndsGivesTheTubesAxis) {
   EXPECT_NE(o.output.find("which fits: `volume_axis: [0, 0, 1]`"), std::string::npos) << o.output;
 }
 
+TEST(MessageClasses, RigidSurfaceTheSlaveStartsBehindGivesTheSide) {
+  const std::string deck = read_text(kExample) +
+                           "rigid_surfaces:\n  sleeve: {type: cylinder, radius: 1.2 mm, side: outside}\n"
+                           "contact:\n  wall_sleeve: {slave: wall, rigid: sleeve, penalty: 1e3 N/mm^3}\n";
+  const Outcome o = expect_check_error(kScratch, "rigid-behind", deck, "wall_sleeve: {slave: wall",
+                                       "contact.wall_sleeve.rigid",
+                                       "contact pair 'wall_sleeve': 2 of the 2 slave nodes of 'wall' that face the rigid "
+                                       "surface 'sleeve' lie behind it at the reference state, the deepest by 0.437 mm");
+  EXPECT_SAYS(o, "write `side: inside` in rigid_surfaces.sleeve (line " +
+                     std::to_string(line_of(deck, "  sleeve: {type: cylinder")) + ")");
+}
+
+TEST(MessageClasses, VolumeControlOfALoadThatPushesInwardNamesFlip) {
+  // The tube's volume under `flip: true` is −π R² L = −1.829 mm³: a positive target is reached only
+  // through zero, everting the tube. Refused at the target, by check and by run, with the fix.
+  const std::string controlled =
+      replace(read_text(kExample), "    set: {lumen: 200 mmHg}", "    volume_control: {load: lumen, volume: 3 mm^3}");
+  const std::string flipped =
+      replace(controlled, "lumen: {type: pressure, part: wall}", "lumen: {type: pressure, part: wall, flip: true}");
+  const Outcome o = expect_check_error(kScratch, "volume-control-flip", flipped, "volume_control: {load: lumen",
+                                       "steps[1].volume_control.volume",
+                                       "step 2 'inflation' controls the volume of load 'lumen', which is -1.82894 mm³ "
+                                       "at the reference state");
+  EXPECT_SAYS(o, "because the load has `flip: true`");
+  EXPECT_SAYS(o, "remove `flip: true` from the load (or set `flip: false`): the volume is then 1.82894 mm³");
+  const fs::path out = fs::temp_directory_path() / kScratch / "volume-control-flip-out";
+  EXPECT_EQ(run_cli("run " + (fs::temp_directory_path() / kScratch / "volume-control-flip.yaml").string() + " -q -o " +
+                    out.string())
+                .exit_code,
+            2);
+  // Without `flip`, a meridian run towards −z points the normals in: the fix is then to set it.
+  const std::string inward = replace(controlled, "from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm]",
+                                     "from: [0.763 mm, 1 mm], to: [0.763 mm, 0 mm]");
+  const Outcome p = expect_check_error(kScratch, "volume-control-inward", inward, "volume_control: {load: lumen",
+                                       "steps[1].volume_control.volume", "the normals point into the volume");
+  EXPECT_SAYS(p, "set `flip: true` on the load (or run the meridian the other way");
+}
+
 TEST(MessageClasses, UndefinedPartListsTheParts) {
   expect_deck_message("undefined-part", "part: wall}", "part: wal}", "part: wal}", "loads.lumen.part",
                       "undefined part 'wal' (the parts are: wall", "did you mean 'wall'?");

@@ -7,7 +7,8 @@
 //     inside): before contact p = (μH/R)(1 − λ⁻⁴) (theory manual (8.1): S_θ = p R λ_z/H with
 //     S_θ = μ(1 − λ⁻⁴ λ_z⁻²)); after contact the contact pressure is p − p_free(R_c/R);
 //     with a soft penalty, Newton converges quadratically in the increments whose active
-//     set does not change.
+//     set does not change;
+// (c) the tube with a penalty far too soft for its contact pressure: the run warns once, at the pair.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +16,7 @@
 #include <numbers>
 
 #include "../support/capture.hpp"
+#include "../support/deck_files.hpp"
 #include "../support/system_fd.hpp"
 
 using namespace tunica;
@@ -226,4 +228,26 @@ TEST(RigidContactDeck, AssembledTangentWithContactMatchesFiniteDifferences) {
     EXPECT_LT(worst, 1e-6 * size) << m.title;
     std::printf("%s: FD of the assembled residual vs K: %.2e (max |K| %.2e)\n", m.title.c_str(), worst, size);
   }
+}
+
+TEST(RigidContactDeck, PenetrationFarBeyondThePenaltysScaleIsWarnedOnceAtThePair) {
+  // ε = 0.05 N/mm³ leaves p_c/ε ≈ 0.004/0.05 = 0.08 mm, more than half the 0.125 mm elements.
+  const std::string soft = replace(kTube, "PENALTY", "0.05");
+  const std::string deck = write_deck_file("tunica-rigid-contact", "soft-penalty", soft);
+  const std::string out = (std::filesystem::temp_directory_path() / "tunica-rigid-contact" / "soft-out").string();
+  const Outcome o = run_cli("run " + deck + " -q -o " + out);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  const std::string at = deck + ":" + std::to_string(line_of(soft, "  wall: {slave: tube")) + ":";
+  const std::size_t w = o.output.find("tunica: warning: " + at);
+  ASSERT_NE(w, std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("tunica: warning: " + at, w + 1), std::string::npos) << "once per pair: " << o.output;
+  for (const char* says : {"key 'contact.wall': contact pair 'wall': at step 2 'contact', increment",
+                           "mm into the rigid surface 'sleeve'", "of its element length 0.125 mm",
+                           "Raise `penalty` (to about", "check the cylinder's `side`"})
+    EXPECT_NE(o.output.find(says), std::string::npos) << says << " missing from: " << o.output;
+  // The penalty of the tests above leaves 4e-6 mm: no warning.
+  const std::string stiff = write_deck_file("tunica-rigid-contact", "stiff-penalty", replace(kTube, "PENALTY", "1e3"));
+  const Outcome ok = run_cli("run " + stiff + " -q -o " + out + "-stiff");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_EQ(ok.output.find("key 'contact.wall'"), std::string::npos) << ok.output;
 }

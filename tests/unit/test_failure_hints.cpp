@@ -1,7 +1,9 @@
-// The hints a stopped run's message gives (solver/failure_hints.hpp): raise max_iterations when
-// Newton was still converging; volume_control when the pressure–volume curve has flattened
-// to a maximum at the pressure the failed increment tried (a limit point); that the pressure
-// still rises when the curve has flattened short of its maximum; nothing otherwise.
+// The hints a stopped run's message gives (solver/failure_hints.hpp), one per failure: raise
+// max_iterations when Newton was still converging; volume_control when the pressure–volume curve
+// has flattened to a maximum at the pressure the failed increment tried (a limit point), even if
+// Newton was still converging; that the pressure still rises when the curve has flattened short of
+// its maximum; for a singular tangent, the free body if one is, else a load beyond what the
+// structure carries; nothing otherwise.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -14,6 +16,10 @@
 using namespace tunica;
 
 namespace {
+
+std::string replace_first(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
 
 Model one_load_model() {
   Model m;
@@ -121,11 +127,11 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   ASSERT_NE(near, std::string::npos) << h;
   EXPECT_NEAR(std::stod(h.substr(near + 30)), kpa(1.3025), 1e-3 * kpa(1.3025)) << h;
   EXPECT_NE(h.find(fmt::format("kPa, above the {:.4g} kPa the failed increment tried", kpa(1.25))), std::string::npos) << h;
-  EXPECT_EQ(h.find("likely at a maximum"), std::string::npos) << h;
+  EXPECT_EQ(h.find("likely at the largest the structure carries"), std::string::npos) << h;
   EXPECT_EQ(h.find("volume_control: {load"), std::string::npos) << h;
   // Trying beyond the predicted maximum: the limit point and volume control.
   const std::string beyond = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.31));
-  EXPECT_NE(beyond.find("likely at a maximum"), std::string::npos) << beyond;
+  EXPECT_NE(beyond.find("likely at the largest the structure carries"), std::string::npos) << beyond;
   EXPECT_NE(beyond.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << beyond;
   // A flattened curve whose dp/dV no longer falls: no maximum in sight.
   const std::string steady =
@@ -134,7 +140,97 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   // Past the maximum (dp/dV negative): the limit point whatever was tried.
   const std::string past =
       failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
-  EXPECT_NE(past.find("likely at a maximum"), std::string::npos) << past;
+  EXPECT_NE(past.find("likely at the largest the structure carries"), std::string::npos) << past;
+}
+
+TEST(FailureHints, AtTheLargestPressureASlowNewtonGetsOneHintNotTwo) {
+  // A tube at its asymptote μH/R: the curve flattened to nothing, the pressure tried at its end,
+  // and Newton creeping (relative residual 2e-4, falling) when the iterations ran out. There is
+  // no state to converge to: the limit, not more iterations.
+  const Model m = one_load_model();
+  const auto flat = along({{0, 0}, {1, 1}, {1.5, 2}, {1.6, 3}, {1.601, 4}});
+  const std::string h = failure_hints(m, raising(1.61), failed("no convergence in 12 iterations", 2e-4), flat, trying(1.605));
+  EXPECT_EQ(h.find("Hint:"), h.rfind("Hint:")) << "one hint: " << h;
+  EXPECT_NE(h.find("likely at the largest the structure carries (a maximum of the curve, a limit point, or an "
+                   "asymptote that it approaches)"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("(raising `max_iterations` would not help)"), std::string::npos) << h;
+  EXPECT_EQ(h.find("raise `max_iterations`"), std::string::npos) << h;
+  EXPECT_NE(h.find("Lower the load below about"), std::string::npos) << h;
+  // Past the maximum (dp/dV negative): said as passed.
+  const std::string past = failure_hints(m, raising(3), failed("no convergence in 12 iterations", 2e-4),
+                                         along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
+  EXPECT_NE(past.find("a maximum of the curve, a limit point, already passed"), std::string::npos) << past;
+  // Short of the predicted maximum, still converging: more iterations, alone.
+  const std::string slow = failure_hints(m, raising(3), failed("no convergence in 12 iterations", 2e-4),
+                                         along({{0, 0}, {1, 1}, {1.1, 2}, {1.18, 3}, {1.24, 4}}), trying(1.25));
+  EXPECT_NE(slow.find("raise `max_iterations` in `solver` (now 12)"), std::string::npos) << slow;
+  EXPECT_EQ(slow.find("Hint:"), slow.rfind("Hint:")) << "one hint: " << slow;
+}
+
+namespace {
+
+NewtonResult singular() {
+  NewtonResult r = failed("the tangent matrix is singular", 0.95);
+  r.singular = true;
+  r.residual_falling = false;
+  return r;
+}
+
+const std::string kHeldTube = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 100 kPa}
+parts:
+  wall:
+    element: axisymmetric_membrane
+    material: rubber
+    thickness: 0.1 mm
+    mesh: {type: line, from: [2 mm, 0 mm], to: [2 mm, 4 mm], elements: 8}
+boundary:
+  base: {node_set: wall.start, dofs: [z]}
+  top:  {node_set: wall.end, dofs: [z]}
+loads:
+  blood: {type: pressure, part: wall}
+steps:
+  - {name: inflate, increments: 10, set: {blood: 4 MPa}}
+)";
+
+}  // namespace
+
+TEST(FailureHints, ASingularTangentOfAHeldModelIsALoadBeyondWhatItCarries) {
+  // The trial's `lumen: 4` meant as kPa: 4 N/mm², 800 times the tube's asymptote μH/R = 5 kPa.
+  // The model is held, so the hint speaks of the load, not of rigid-body motion.
+  const Model m = read_deck_text(kHeldTube, "held.yaml");
+  LoadState tried = trying(0.0125);
+  tried.step = 0;
+  const std::string h = failure_hints(m, m.steps[0], singular(), along({{0, 0}}), tried);
+  EXPECT_EQ(h.find("Hint:"), h.rfind("Hint:")) << "one hint: " << h;
+  EXPECT_NE(h.find("the model is held against rigid-body motion (`tunica check` finds no body free to move)"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("likely a load beyond what the structure carries"), std::string::npos) << h;
+  EXPECT_NE(h.find("Load 'blood' tried 12.5 kPa = 93.76 mmHg (the step's target: 4000 kPa = 3e+04 mmHg)"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("No increment of this step converged"), std::string::npos) << h;
+  EXPECT_NE(h.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << h;
+  EXPECT_EQ(h.find("is the model held"), std::string::npos) << h;
+}
+
+TEST(FailureHints, ASingularTangentOfAFreeModelNamesTheBodyAndItsHold) {
+  // Neither end held in z: the tube slides along the axis whatever the load.
+  const Model m = read_deck_text(replace_first(replace_first(kHeldTube, "dofs: [z]}", "dofs: [r]}"), "dofs: [z]}",
+                                               "dofs: [r]}"),
+                                 "free.yaml");
+  LoadState tried = trying(0.0125);
+  tried.step = 0;
+  const std::string h = failure_hints(m, m.steps[0], singular(), along({{0, 0}}), tried);
+  EXPECT_NE(h.find("the tangent is singular because a body is free to move rigidly (as `tunica check` warns): part "
+                   "'wall': no boundary condition holds z"),
+            std::string::npos)
+      << h;
+  EXPECT_EQ(h.find("beyond what the structure carries"), std::string::npos) << h;
 }
 
 TEST(FailureHints, WithoutParaViewFramesTheHintPointsToWhatWasWritten) {
