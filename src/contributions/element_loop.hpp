@@ -11,6 +11,8 @@
 //     void internal(int e, const State&, Vector& f, Matrix* K) const;
 //     double length2(const Model&, const int* en, const State&) const;  // L_e² of the round-off yardstick
 //     void pressure(const State&, double p, Vector& f, Matrix* K) const;             // if kPressure
+//     double subtract_pressure(const State&, double p, Vector& f, Matrix* K) const;  // optional: f −= f_p,
+//                                      // K −= ∂f_p/∂u in place, returns ‖f_p‖² (else pressure() and a subtraction)
 //     double volume(const State&, const VolumeMeasure&, Vector* grad) const;         // if kPressure
 //     void start(int e, double T0, Matrix& K) const;                                 // if kStartStiffness
 //     void points(int e, const State&, std::vector<MembranePoint or SolidPoint>&) const;
@@ -101,12 +103,16 @@ public:
       double s2 = f.squaredNorm();
       if constexpr (Kernel::kPressure) {
         if (pressure != 0.0) {
-          Vector fp;
-          Matrix dfp;
-          kernel_.pressure(s, pressure, fp, K ? &dfp : nullptr);
-          s2 += fp.squaredNorm();
-          f -= fp;
-          if (K) Ke -= dfp;
+          if constexpr (requires(Vector& r, Matrix* M) { kernel_.subtract_pressure(s, pressure, r, M); }) {
+            s2 += kernel_.subtract_pressure(s, pressure, f, K ? &Ke : nullptr);
+          } else {
+            Vector fp;
+            Matrix dfp;
+            kernel_.pressure(s, pressure, fp, K ? &dfp : nullptr);
+            s2 += fp.squaredNorm();
+            f -= fp;
+            if (K) Ke -= dfp;
+          }
         }
       }
       // Stiffness × element size bounds the round-off of stresses computed near zero strain.
