@@ -24,6 +24,7 @@
 // the same order whatever the number of threads: results are identical bit for bit.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <exception>
 #include <stdexcept>
 #include <vector>
@@ -88,6 +89,11 @@ public:
     if (Kernel::kStartStiffness)
       agree("curvatures (one per element)", block_.size(), static_cast<long>(curvature_.size()), "the context");
     if (!wrong.empty()) throw std::logic_error("element type " + type.name + " disagrees with itself" + wrong);
+    all_free_.resize(block_.size());
+    for (int e = 0; e < block_.size(); ++e) {
+      const int* code = layout_.scatter.data() + static_cast<std::size_t>(kDofs) * kDofs * e;
+      all_free_[e] = std::all_of(code, code + kDofs * kDofs, [](int k) { return k >= 0; });
+    }
   }
 
   void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
@@ -118,7 +124,7 @@ public:
       // Stiffness × element size bounds the round-off of stresses computed near zero strain.
       if (K) s2 += Ke.squaredNorm() * kernel_.length2(model_, en, s);
       scale_e[e] = s2;
-      scatter(en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
+      scatter(e, en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
     });
     for (double s2 : scale_e) scale2 += s2;
   }
@@ -178,7 +184,7 @@ public:
           for (int a = 0; a < kDofs; ++a) de(a) = d(Kernel::dof(model_, en, a));
           f = Ke * de;
         }
-        scatter(en, f, &Ke, layout_.scatter.data() + kDofs * kDofs * e, Kd, &K);
+        scatter(e, en, f, &Ke, layout_.scatter.data() + kDofs * kDofs * e, Kd, &K);
       });
     }
   }
@@ -225,11 +231,16 @@ private:
   /// R(dof a) += f(a); K += K_e through the element's codes (BlockLayout): K_e(a, b) is added to
   /// the split storage at its code, those of the upper triangle only where it is stored. Every entry
   /// of K receives one term per element, in the elements' order, as a full matrix's entry would.
-  void scatter(const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
+  void scatter(int e, const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
                TangentMatrix* K) const {
     for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
     if (!K) return;
     double* values = K->values();
+    if (K->upper() && all_free_[e]) {  // every code is stored: no test per entry
+      for (int a = 0; a < kDofs; ++a)
+        for (int b = 0; b < kDofs; ++b) values[code[a * kDofs + b]] += (*Ke)(a, b);
+      return;
+    }
     // Unsigned: −1 (not free-free) is beyond the stored codes as well.
     const unsigned stored = static_cast<unsigned>(K->stored());
     for (int a = 0; a < kDofs; ++a)
@@ -242,6 +253,7 @@ private:
   Kernel kernel_;
   BlockLayout layout_;
   std::vector<double> curvature_;
+  std::vector<char> all_free_;  ///< per element: every unknown free (no code −1)
   int points_per_element_ = 0;
 };
 
