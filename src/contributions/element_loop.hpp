@@ -33,9 +33,10 @@
 
 namespace tunica {
 
-/// Runs kernel(e) for every element of a layout, colour by colour, in parallel within a colour.
-/// An exception of a kernel (an inverted element) is rethrown after the colour: the one of the
-/// lowest element index, so that the message does not depend on the threads.
+/// Runs body(e) for every element of a layout, colour by colour; the runs of a colour in parallel,
+/// each run's elements in order on one thread. An exception of a kernel (an inverted element) is
+/// rethrown after the colour: the one of the lowest element index, so that the message does not
+/// depend on the threads.
 template <class Body>
 void for_each_coloured(const BlockLayout& layout, Body&& body) {
   std::exception_ptr error;
@@ -44,19 +45,21 @@ void for_each_coloured(const BlockLayout& layout, Body&& body) {
   constexpr int kMinParallel = 1024;
   for (std::size_t c = 0; c + 1 < layout.colour_start.size(); ++c) {
     const int begin = layout.colour_start[c], end = layout.colour_start[c + 1];
-#pragma omp parallel for schedule(static) if (end - begin >= kMinParallel)
-    for (int k = begin; k < end; ++k) {
-      const int e = layout.order[k];
-      try {
-        body(e);
-      } catch (...) {
+    const int elements = layout.run_start[end] - layout.run_start[begin];
+#pragma omp parallel for schedule(static) if (elements >= kMinParallel && end - begin > 1)
+    for (int r = begin; r < end; ++r)
+      for (int k = layout.run_start[r]; k < layout.run_start[r + 1]; ++k) {
+        const int e = layout.order[k];
+        try {
+          body(e);
+        } catch (...) {
 #pragma omp critical(tunica_assembly_error)
-        if (error_element < 0 || e < error_element) {
-          error = std::current_exception();
-          error_element = e;
+          if (error_element < 0 || e < error_element) {
+            error = std::current_exception();
+            error_element = e;
+          }
         }
       }
-    }
     if (error) std::rethrow_exception(error);
   }
 }
