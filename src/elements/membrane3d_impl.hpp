@@ -126,27 +126,27 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
     // (5.6): f_a += w B_aᵀ S = w Σ_ij S_ij f_i ∂N_a/∂s_j, i.e. (f_1 … f_{N−1}) += (F w S₂) ∂N/∂sᵀ.
     fr.noalias() += (F * wS2) * dNr.transpose();
     if (K) {
-      // B: δx ↦ (δE11, δE22, 2δE12), node-major columns, nodes 1 … N−1.
-      Eigen::Matrix<double, 3, 3 * M> B;
-      for (int a = 0; a < M; ++a) {
-        B.template block<1, 3>(0, 3 * a) = dNr(a, 0) * f1.transpose();
-        B.template block<1, 3>(1, 3 * a) = dNr(a, 1) * f2.transpose();
-        B.template block<1, 3>(2, 3 * a) = dNr(a, 1) * f1.transpose() + dNr(a, 0) * f2.transpose();
-      }
-      // (5.6): K_ab += w B_aᵀ D B_b + G_ab I₃, G_ab = w ∂N_a/∂s · S ∂N_b/∂s, for 1 ≤ a ≤ b (D and S are
-      // symmetric: K_ba = K_abᵀ). lazyProduct: coefficient-wise fixed-size products (not the
-      // dynamic-size GEMM kernel).
-      const Eigen::Matrix<double, 3, 3 * M> wDB = (w * m.D).lazyProduct(B);
-      const Eigen::Matrix<double, M, M> G = dNr * wS2 * dNr.transpose();
-      for (int b = 0; b < M; ++b)
-        for (int a = 0; a <= b; ++a) {
-          Eigen::Matrix3d Kab =
-              B.template block<3, 3>(0, 3 * a).transpose().lazyProduct(wDB.template block<3, 3>(0, 3 * b));
-          Kab.diagonal().array() += G(a, b);
-          auto out = K->template block<3, 3>(3 * (a + 1), 3 * (b + 1));
+      // (5.6) with B_a = β_a1 f1ᵀ + β_a2 f2ᵀ, β_a1 = (∂N_a/∂s_1, 0, ∂N_a/∂s_2), β_a2 = (0, ∂N_a/∂s_2, ∂N_a/∂s_1):
+      //   K_ab = w B_aᵀ D B_b + G_ab I₃ = Σ_ij M_ij f_i f_jᵀ + G_ab I₃ = f1 uᵀ + f2 vᵀ + G_ab I₃,
+      //   M_ij = w β_aiᵀ D β_bj,  u = M_11 f1 + M_12 f2,  v = M_21 f1 + M_22 f2,  G_ab = w ∂N_a/∂s · S ∂N_b/∂s,
+      // for 1 ≤ a ≤ b (D and S are symmetric: K_ba = K_abᵀ).
+      const Eigen::Matrix3d wD = w * m.D;
+      for (int b = 1; b < N; ++b) {
+        const double n1 = dN(b, 0), n2 = dN(b, 1);
+        const Eigen::Vector3d Dbeta1 = n1 * wD.col(0) + n2 * wD.col(2), Dbeta2 = n2 * wD.col(1) + n1 * wD.col(2);
+        const Eigen::Vector2d Sb = wS2 * dN.row(b).transpose();
+        for (int a = 1; a <= b; ++a) {
+          const double m1 = dN(a, 0), m2 = dN(a, 1);
+          const double M11 = m1 * Dbeta1(0) + m2 * Dbeta1(2), M21 = m2 * Dbeta1(1) + m1 * Dbeta1(2);
+          const double M12 = m1 * Dbeta2(0) + m2 * Dbeta2(2), M22 = m2 * Dbeta2(1) + m1 * Dbeta2(2);
+          const Eigen::Vector3d u = M11 * f1 + M12 * f2, v = M21 * f1 + M22 * f2;
+          Eigen::Matrix3d Kab = f1 * u.transpose() + f2 * v.transpose();
+          Kab.diagonal().array() += m1 * Sb(0) + m2 * Sb(1);
+          auto out = K->template block<3, 3>(3 * a, 3 * b);
           if (q == 0) out = Kab;  // every one of these blocks is set at the first Gauss point
           else out += Kab;
         }
+      }
     }
     if (points) {
       MembranePoint& p = (*points)[q];
