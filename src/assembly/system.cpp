@@ -85,6 +85,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     for (const auto& block : part.blocks) {
       const ElementType& type = element_type(block.kind);
       BlockLayout layout;
+      layout.slots = layout_->slots();
       const int ndn = type.unknowns_per_node, nd = type.nodes * ndn;
       layout.scatter.resize(static_cast<std::size_t>(block.size()) * nd * nd);
       int* code = layout.scatter.data();

@@ -24,7 +24,6 @@
 // the same order whatever the number of threads: results are identical bit for bit.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <exception>
 #include <stdexcept>
 #include <vector>
@@ -92,11 +91,11 @@ public:
     if (Kernel::kStartStiffness)
       agree("curvatures (one per element)", block_.size(), static_cast<long>(curvature_.size()), "the context");
     if (!wrong.empty()) throw std::logic_error("element type " + type.name + " disagrees with itself" + wrong);
-    all_free_.resize(block_.size());
-    for (int e = 0; e < block_.size(); ++e) {
-      const int* code = layout_.scatter.data() + static_cast<std::size_t>(kDofs) * kDofs * e;
-      all_free_[e] = std::all_of(code, code + kDofs * kDofs, [](int k) { return k >= 0; });
-    }
+    compact_.resize(block_.size());
+    runs_.resize(kRuns * static_cast<std::size_t>(block_.size()));
+    for (int e = 0; e < block_.size(); ++e)
+      compact_[e] = find_runs(layout_.scatter.data() + static_cast<std::size_t>(kDofs) * kDofs * e,
+                              runs_.data() + kRuns * static_cast<std::size_t>(e));
   }
 
   void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
@@ -239,9 +238,8 @@ private:
     for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
     if (!K) return;
     double* values = K->values();
-    if (K->upper() && all_free_[e]) {  // every code is stored: no test per entry
-      for (int a = 0; a < kDofs; ++a)
-        for (int b = 0; b < kDofs; ++b) values[code[a * kDofs + b]] += (*Ke)(a, b);
+    if (K->split() && compact_[e]) {
+      scatter_runs(runs_.data() + kRuns * static_cast<std::size_t>(e), *Ke, values, K->upper() != nullptr);
       return;
     }
     // Unsigned: −1 (not free-free) is beyond the stored codes as well.
@@ -251,12 +249,79 @@ private:
         if (const unsigned k = static_cast<unsigned>(code[a * kDofs + b]); k < stored) values[k] += (*Ke)(a, b);
   }
 
+  // An element whose unknowns are all free, with a node's equations consecutive (System numbers them
+  // node by node), has its codes in runs: in the d × d block of K_e of nodes a and b (d unknowns per
+  // node), column l of a block below K's diagonal (node a's rows after node b's) is d consecutive
+  // slots (rows ascending in one column of the lower triangle), row k of a block above it d
+  // consecutive codes of the upper triangle, and in a diagonal block (a = b) column t from the
+  // diagonal down and row t right of it start at the slot of the diagonal entry, in `lower` and
+  // `upper`. Such an element keeps d codes per block (the start of each run, checked against all its
+  // codes when the block is built): a third of the codes read per entry, no test per entry, and the
+  // upper triangle skipped by block where it is not stored.
+  static constexpr int kUnknowns = Kernel::kUnknowns, kRuns = kUnknowns * Kernel::kNodes * Kernel::kNodes;
+
+  /// The starts of the runs of an element's codes `code` into runs[0 … kRuns), block (a, b) at
+  /// kUnknowns · (a · nodes + b); false if its codes are not in runs.
+  bool find_runs(const int* code, int* runs) const {
+    constexpr int d = kUnknowns;
+    const int S = layout_.slots;
+    for (int a = 0; a < Kernel::kNodes; ++a)
+      for (int b = 0; b < Kernel::kNodes; ++b) {
+        int* r = runs + d * (a * Kernel::kNodes + b);
+        const auto at = [&](int k, int l) { return code[(d * a + k) * kDofs + d * b + l]; };
+        for (int t = 0; t < d; ++t) {
+          if (a == b) {
+            r[t] = at(t, t);
+            if (r[t] < 0 || r[t] + d - t > S) return false;
+            for (int k = t; k < d; ++k)
+              if (at(k, t) != r[t] + k - t) return false;
+            for (int l = t + 1; l < d; ++l)
+              if (at(t, l) != S + r[t] + l - t) return false;
+          } else if (at(0, 0) >= 0 && at(0, 0) < S) {  // below the diagonal: column t
+            r[t] = at(0, t);
+            if (r[t] < 0 || r[t] + d > S) return false;
+            for (int k = 0; k < d; ++k)
+              if (at(k, t) != r[t] + k) return false;
+          } else {  // above the diagonal: row t
+            r[t] = at(t, 0);
+            if (r[t] < S) return false;
+            for (int l = 0; l < d; ++l)
+              if (at(t, l) != r[t] + l) return false;
+          }
+        }
+      }
+    return true;
+  }
+
+  /// K_e added through the runs of an element (find_runs); the upper triangle only if `upper`.
+  void scatter_runs(const int* r, const Matrix& Ke, double* values, bool upper) const {
+    constexpr int d = kUnknowns;
+    using Run = Eigen::Map<Eigen::Matrix<double, d, 1>>;
+    const int S = layout_.slots;
+    for (int a = 0; a < Kernel::kNodes; ++a)
+      for (int b = 0; b < Kernel::kNodes; ++b, r += d) {
+        if (a == b) {
+          for (int t = 0; t < d; ++t) {
+            double* v = values + r[t];
+            for (int k = t; k < d; ++k) v[k - t] += Ke(d * a + k, d * a + t);
+            if (upper)
+              for (int l = t + 1; l < d; ++l) v[S + l - t] += Ke(d * a + t, d * a + l);
+          }
+        } else if (r[0] < S) {
+          for (int l = 0; l < d; ++l) Run(values + r[l]) += Ke.template block<d, 1>(d * a, d * b + l);
+        } else if (upper) {
+          for (int k = 0; k < d; ++k) Run(values + r[k]) += Ke.template block<1, d>(d * a + k, d * b).transpose();
+        }
+      }
+  }
+
   const Model& model_;
   const ElementBlock& block_;
   Kernel kernel_;
   BlockLayout layout_;
   std::vector<double> curvature_;
-  std::vector<char> all_free_;  ///< per element: every unknown free (no code −1)
+  std::vector<char> compact_;  ///< per element: its codes are in runs (find_runs)
+  std::vector<int> runs_;      ///< per element, kRuns starts of runs (where compact_)
   int points_per_element_ = 0;
 };
 
