@@ -24,8 +24,12 @@ MembraneResponse membrane_response(const MembraneMaterial& material, const Eigen
   // Reduced energy Ŵ(x) = W(x, C33(x)), (2.5): gradient g and Hessian H (chain rule), (2.7):
   //   H = W_xx + W_x3 dC33ᵀ + dC33 W_x3ᵀ + W33 dC33 dC33ᵀ + W3 d²C33,  d²det = [[0,1,0],[1,0,0],[0,0,−2]],
   // symmetric: its upper triangle, each entry once.
-  const Eigen::Vector3d g = Wx + W3 * dc33;
+  // Where W does not depend on C33 (W3, W_x3 and W33 zero: Fung's two-dimensional approach, (3.2)),
+  // every term but W_x and W_xx is zero: g = W_x, H = W_xx.
+  const bool plane = W3 == 0 && W33 == 0 && (Wx3.array() == 0).all();
+  const Eigen::Vector3d g = plane ? Wx : Eigen::Vector3d(Wx + W3 * dc33);
   const auto H = [&](int i, int j, double d2det) {
+    if (plane) return Wxx(i, j);
     return Wxx(i, j) + (Wx3(i) * dc33(j) + dc33(i) * Wx3(j)) + W33 * (dc33(i) * dc33(j)) +
            W3 * (c33_3 * (ddet(i) * ddet(j)) - c33_2 * d2det);
   };
