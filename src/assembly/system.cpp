@@ -151,10 +151,10 @@ void System::assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& 
 }
 
 int colour_run_length(int elements) {
-  // About 256 runs per block, of 32 to 2048 elements: enough runs per colour to share among the
+  // About 128 runs per block, of 32 to 4096 elements: enough runs per colour to share among the
   // threads, and long enough that consecutive elements, which share nodes and so entries of K,
   // are assembled one after the other (a colour of single elements writes K all over at every colour).
-  return std::clamp(elements / 256, 32, 2048);
+  return std::clamp(elements / 128, 32, 4096);
 }
 
 void colour_elements(const ElementBlock& block, int num_nodes, BlockLayout& layout) {
