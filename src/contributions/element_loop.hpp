@@ -124,7 +124,7 @@ public:
         }
       }
       // Stiffness × element size bounds the round-off of stresses computed near zero strain.
-      if (K) s2 += Ke.squaredNorm() * kernel_.length2(model_, en, s);
+      if (K) s2 += Ke.colwise().squaredNorm().sum() * kernel_.length2(model_, en, s);
       scale_e[e] = s2;
       scatter(e, en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
     });
