@@ -4,6 +4,7 @@
 // (contributions/element_type.hpp) for any element kernel; a kernel supplies
 //
 //   struct Kernel : SomeKinematics<...> {          // contributions/kinematics.hpp: State, gather, dof
+//                                                  // (and optionally add: R += f_e node by node)
 //     static constexpr bool kPressure;             // carries follower pressure (theory manual §6)
 //     static constexpr bool kStartStiffness;       // has the stress-free start's K₀ (theory manual §7.2)
 //     static constexpr bool kSolid;                // Gauss-point states are SolidPoint
@@ -235,7 +236,11 @@ private:
   /// of K receives one term per element, in the elements' order, as a full matrix's entry would.
   void scatter(int e, const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
                TangentMatrix* K) const {
-    for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
+    if constexpr (requires { Kernel::add(model_, en, f, R); }) {
+      Kernel::add(model_, en, f, R);
+    } else {
+      for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
+    }
     if (!K) return;
     double* values = K->values();
     if (K->split() && compact_[e]) {
