@@ -24,10 +24,11 @@
 // tangent at the reference state (a stiffness of the right size for the linear solver;
 // u_i stays exactly 0, so the part enters stress free in its deck geometry).
 //
-// Parallel assembly: the elements of each block are coloured once (greedy: no
-// two elements of one colour share a node) and each colour is one OpenMP loop
-// (contributions/element_loop.hpp): results are identical bit for bit whatever
-// the number of threads.
+// Parallel assembly: the elements of each block are cut into runs of consecutive
+// elements, coloured once (greedy: no two runs of one colour share a node), and each
+// colour is one OpenMP loop over its runs, each run's elements in order on one thread
+// (contributions/element_loop.hpp): results are identical bit for bit whatever the
+// number of threads.
 #include <Eigen/Sparse>
 #include <array>
 #include <memory>
