@@ -85,6 +85,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
     for (const auto& block : part.blocks) {
       const ElementType& type = element_type(block.kind);
       BlockLayout layout;
+      layout.slots = layout_->slots();
       const int ndn = type.unknowns_per_node, nd = type.nodes * ndn;
       layout.scatter.resize(static_cast<std::size_t>(block.size()) * nd * nd);
       int* code = layout.scatter.data();
@@ -96,7 +97,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
             *code++ = layout_->entry(i, j);
           }
       }
-      colour_elements(block, model.num_nodes(), layout.order, layout.colour_start);
+      colour_elements(block, model.num_nodes(), layout);
       blocks_[p].push_back(type.make(BlockContext{.model = model,
                                                   .part = part,
                                                   .block = block,
@@ -149,39 +150,57 @@ void System::assemble_held(int step, const Eigen::VectorXd& u, Eigen::VectorXd& 
   }
 }
 
-void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start) {
-  const int nen = nodes_per_element(block.kind);
-  std::vector<int> colour(block.size());
-  // used[node]: bit c set if an element of colour 64·word + c already touches the node.
+int colour_run_length(int elements) {
+  // About 128 runs per block, of 32 to 4096 elements: enough runs per colour to share among the
+  // threads, and long enough that consecutive elements, which share nodes and so entries of K,
+  // are assembled one after the other (a colour of single elements writes K all over at every colour).
+  return std::clamp(elements / 128, 32, 4096);
+}
+
+void colour_elements(const ElementBlock& block, int num_nodes, BlockLayout& layout) {
+  const int nen = nodes_per_element(block.kind), n = block.size();
+  const int length = colour_run_length(n), runs = (n + length - 1) / length;
+  std::vector<int> colour(runs);
+  // used[node]: bit c set if a run of colour 64·word + c already touches the node.
   int words = 1;
   std::vector<std::uint64_t> used(static_cast<std::size_t>(num_nodes), 0);
   int colours = 0;
-  for (int e = 0; e < block.size(); ++e) {
-    const int* en = block.element(e);
+  for (int r = 0; r < runs; ++r) {
+    const int first = r * length, last = std::min(n, first + length);
     for (int w = 0;; ++w) {
       if (w == words) {  // more than 64·words colours (far more than a surface mesh needs): widen the masks
         std::vector<std::uint64_t> wider(static_cast<std::size_t>(num_nodes) * (words + 1), 0);
-        for (int n = 0; n < num_nodes; ++n)
-          for (int k = 0; k < words; ++k) wider[static_cast<std::size_t>(n) * (words + 1) + k] = used[static_cast<std::size_t>(n) * words + k];
+        for (int m = 0; m < num_nodes; ++m)
+          for (int k = 0; k < words; ++k) wider[static_cast<std::size_t>(m) * (words + 1) + k] = used[static_cast<std::size_t>(m) * words + k];
         used.swap(wider);
         ++words;
       }
       std::uint64_t taken = 0;
-      for (int a = 0; a < nen; ++a) taken |= used[static_cast<std::size_t>(en[a]) * words + w];
+      for (int e = first; e < last; ++e)
+        for (int a = 0; a < nen; ++a) taken |= used[static_cast<std::size_t>(block.element(e)[a]) * words + w];
       if (~taken == 0) continue;
       const int c = std::countr_one(taken);
-      for (int a = 0; a < nen; ++a) used[static_cast<std::size_t>(en[a]) * words + w] |= std::uint64_t{1} << c;
-      colour[e] = 64 * w + c;
-      colours = std::max(colours, colour[e] + 1);
+      for (int e = first; e < last; ++e)
+        for (int a = 0; a < nen; ++a) used[static_cast<std::size_t>(block.element(e)[a]) * words + w] |= std::uint64_t{1} << c;
+      colour[r] = 64 * w + c;
+      colours = std::max(colours, colour[r] + 1);
       break;
     }
   }
-  start.assign(colours + 1, 0);
-  for (int e = 0; e < block.size(); ++e) ++start[colour[e] + 1];
-  for (int c = 0; c < colours; ++c) start[c + 1] += start[c];
-  order.resize(block.size());
-  std::vector<int> next(start.begin(), start.end() - 1);
-  for (int e = 0; e < block.size(); ++e) order[next[colour[e]]++] = e;
+  // Runs colour by colour (ascending within a colour), each run's elements ascending.
+  layout.colour_start.assign(colours + 1, 0);
+  for (int r = 0; r < runs; ++r) ++layout.colour_start[colour[r] + 1];
+  for (int c = 0; c < colours; ++c) layout.colour_start[c + 1] += layout.colour_start[c];
+  std::vector<int> run_order(runs);
+  std::vector<int> next(layout.colour_start.begin(), layout.colour_start.end() - 1);
+  for (int r = 0; r < runs; ++r) run_order[next[colour[r]]++] = r;
+  layout.order.clear();
+  layout.order.reserve(n);
+  layout.run_start.assign(1, 0);
+  for (int r : run_order) {
+    for (int e = r * length; e < std::min(n, (r + 1) * length); ++e) layout.order.push_back(e);
+    layout.run_start.push_back(static_cast<int>(layout.order.size()));
+  }
 }
 
 void System::apply_boundary(const LoadState& loads, Eigen::VectorXd& u) const {

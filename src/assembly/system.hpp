@@ -24,10 +24,11 @@
 // tangent at the reference state (a stiffness of the right size for the linear solver;
 // u_i stays exactly 0, so the part enters stress free in its deck geometry).
 //
-// Parallel assembly: the elements of each block are coloured once (greedy: no
-// two elements of one colour share a node) and each colour is one OpenMP loop
-// (contributions/element_loop.hpp): results are identical bit for bit whatever
-// the number of threads.
+// Parallel assembly: the elements of each block are cut into runs of consecutive
+// elements, coloured once (greedy: no two runs of one colour share a node), and each
+// colour is one OpenMP loop over its runs, each run's elements in order on one thread
+// (contributions/element_loop.hpp): results are identical bit for bit whatever the
+// number of threads.
 #include <Eigen/Sparse>
 #include <array>
 #include <memory>
@@ -147,10 +148,12 @@ private:
   std::unique_ptr<ContactAssembly> contact_;
 };
 
-/// Greedy colouring of elements so that no two of a colour share a node: `order` lists the
-/// elements colour by colour (ascending element index within a colour), colour c being
-/// order[start[c] … start[c+1]).
-void colour_elements(const ElementBlock& block, int num_nodes, std::vector<int>& order, std::vector<int>& start);
+/// The length of the runs of consecutive elements colour_elements colours, for a block of `elements`.
+int colour_run_length(int elements);
+/// Greedy colouring of runs of consecutive elements (colour_run_length each, the last one shorter)
+/// so that no two runs of a colour share a node: sets layout.order, run_start and colour_start
+/// (BlockLayout), the runs colour by colour, ascending within a colour, each run's elements ascending.
+void colour_elements(const ElementBlock& block, int num_nodes, BlockLayout& layout);
 
 /// Gauss points per element of a block of a part (System::points order).
 inline int points_per_element(const Part& part, ElementKind k) { return element_type(k).points_per_element(part); }

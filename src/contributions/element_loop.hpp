@@ -4,6 +4,7 @@
 // (contributions/element_type.hpp) for any element kernel; a kernel supplies
 //
 //   struct Kernel : SomeKinematics<...> {          // contributions/kinematics.hpp: State, gather, dof
+//                                                  // (and optionally add: R += f_e node by node)
 //     static constexpr bool kPressure;             // carries follower pressure (theory manual §6)
 //     static constexpr bool kStartStiffness;       // has the stress-free start's K₀ (theory manual §7.2)
 //     static constexpr bool kSolid;                // Gauss-point states are SolidPoint
@@ -11,6 +12,8 @@
 //     void internal(int e, const State&, Vector& f, Matrix* K) const;
 //     double length2(const Model&, const int* en, const State&) const;  // L_e² of the round-off yardstick
 //     void pressure(const State&, double p, Vector& f, Matrix* K) const;             // if kPressure
+//     double subtract_pressure(const State&, double p, Vector& f, Matrix* K) const;  // optional: f −= f_p,
+//                                      // K −= ∂f_p/∂u in place, returns ‖f_p‖² (else pressure() and a subtraction)
 //     double volume(const State&, const VolumeMeasure&, Vector* grad) const;         // if kPressure
 //     void start(int e, double T0, Matrix& K) const;                                 // if kStartStiffness
 //     void points(int e, const State&, std::vector<MembranePoint or SolidPoint>&) const;
@@ -30,9 +33,10 @@
 
 namespace tunica {
 
-/// Runs kernel(e) for every element of a layout, colour by colour, in parallel within a colour.
-/// An exception of a kernel (an inverted element) is rethrown after the colour: the one of the
-/// lowest element index, so that the message does not depend on the threads.
+/// Runs body(e) for every element of a layout, colour by colour; the runs of a colour in parallel,
+/// each run's elements in order on one thread. An exception of a kernel (an inverted element) is
+/// rethrown after the colour: the one of the lowest element index, so that the message does not
+/// depend on the threads.
 template <class Body>
 void for_each_coloured(const BlockLayout& layout, Body&& body) {
   std::exception_ptr error;
@@ -41,19 +45,21 @@ void for_each_coloured(const BlockLayout& layout, Body&& body) {
   constexpr int kMinParallel = 1024;
   for (std::size_t c = 0; c + 1 < layout.colour_start.size(); ++c) {
     const int begin = layout.colour_start[c], end = layout.colour_start[c + 1];
-#pragma omp parallel for schedule(static) if (end - begin >= kMinParallel)
-    for (int k = begin; k < end; ++k) {
-      const int e = layout.order[k];
-      try {
-        body(e);
-      } catch (...) {
+    const int elements = layout.run_start[end] - layout.run_start[begin];
+#pragma omp parallel for schedule(static) if (elements >= kMinParallel && end - begin > 1)
+    for (int r = begin; r < end; ++r)
+      for (int k = layout.run_start[r]; k < layout.run_start[r + 1]; ++k) {
+        const int e = layout.order[k];
+        try {
+          body(e);
+        } catch (...) {
 #pragma omp critical(tunica_assembly_error)
-        if (error_element < 0 || e < error_element) {
-          error = std::current_exception();
-          error_element = e;
+          if (error_element < 0 || e < error_element) {
+            error = std::current_exception();
+            error_element = e;
+          }
         }
       }
-    }
     if (error) std::rethrow_exception(error);
   }
 }
@@ -86,6 +92,11 @@ public:
     if (Kernel::kStartStiffness)
       agree("curvatures (one per element)", block_.size(), static_cast<long>(curvature_.size()), "the context");
     if (!wrong.empty()) throw std::logic_error("element type " + type.name + " disagrees with itself" + wrong);
+    compact_.resize(block_.size());
+    runs_.resize(kRuns * static_cast<std::size_t>(block_.size()));
+    for (int e = 0; e < block_.size(); ++e)
+      compact_[e] = find_runs(layout_.scatter.data() + static_cast<std::size_t>(kDofs) * kDofs * e,
+                              runs_.data() + kRuns * static_cast<std::size_t>(e));
   }
 
   void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
@@ -101,18 +112,22 @@ public:
       double s2 = f.squaredNorm();
       if constexpr (Kernel::kPressure) {
         if (pressure != 0.0) {
-          Vector fp;
-          Matrix dfp;
-          kernel_.pressure(s, pressure, fp, K ? &dfp : nullptr);
-          s2 += fp.squaredNorm();
-          f -= fp;
-          if (K) Ke -= dfp;
+          if constexpr (requires(Vector& r, Matrix* M) { kernel_.subtract_pressure(s, pressure, r, M); }) {
+            s2 += kernel_.subtract_pressure(s, pressure, f, K ? &Ke : nullptr);
+          } else {
+            Vector fp;
+            Matrix dfp;
+            kernel_.pressure(s, pressure, fp, K ? &dfp : nullptr);
+            s2 += fp.squaredNorm();
+            f -= fp;
+            if (K) Ke -= dfp;
+          }
         }
       }
       // Stiffness × element size bounds the round-off of stresses computed near zero strain.
-      if (K) s2 += Ke.squaredNorm() * kernel_.length2(model_, en, s);
+      if (K) s2 += Ke.colwise().squaredNorm().sum() * kernel_.length2(model_, en, s);
       scale_e[e] = s2;
-      scatter(en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
+      scatter(e, en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
     });
     for (double s2 : scale_e) scale2 += s2;
   }
@@ -172,7 +187,7 @@ public:
           for (int a = 0; a < kDofs; ++a) de(a) = d(Kernel::dof(model_, en, a));
           f = Ke * de;
         }
-        scatter(en, f, &Ke, layout_.scatter.data() + kDofs * kDofs * e, Kd, &K);
+        scatter(e, en, f, &Ke, layout_.scatter.data() + kDofs * kDofs * e, Kd, &K);
       });
     }
   }
@@ -219,11 +234,19 @@ private:
   /// R(dof a) += f(a); K += K_e through the element's codes (BlockLayout): K_e(a, b) is added to
   /// the split storage at its code, those of the upper triangle only where it is stored. Every entry
   /// of K receives one term per element, in the elements' order, as a full matrix's entry would.
-  void scatter(const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
+  void scatter(int e, const int* en, const Vector& f, const Matrix* Ke, const int* code, Eigen::VectorXd& R,
                TangentMatrix* K) const {
-    for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
+    if constexpr (requires { Kernel::add(model_, en, f, R); }) {
+      Kernel::add(model_, en, f, R);
+    } else {
+      for (int a = 0; a < kDofs; ++a) R(Kernel::dof(model_, en, a)) += f(a);
+    }
     if (!K) return;
     double* values = K->values();
+    if (K->split() && compact_[e]) {
+      scatter_runs(runs_.data() + kRuns * static_cast<std::size_t>(e), *Ke, values, K->upper() != nullptr);
+      return;
+    }
     // Unsigned: −1 (not free-free) is beyond the stored codes as well.
     const unsigned stored = static_cast<unsigned>(K->stored());
     for (int a = 0; a < kDofs; ++a)
@@ -231,11 +254,79 @@ private:
         if (const unsigned k = static_cast<unsigned>(code[a * kDofs + b]); k < stored) values[k] += (*Ke)(a, b);
   }
 
+  // An element whose unknowns are all free, with a node's equations consecutive (System numbers them
+  // node by node), has its codes in runs: in the d × d block of K_e of nodes a and b (d unknowns per
+  // node), column l of a block below K's diagonal (node a's rows after node b's) is d consecutive
+  // slots (rows ascending in one column of the lower triangle), row k of a block above it d
+  // consecutive codes of the upper triangle, and in a diagonal block (a = b) column t from the
+  // diagonal down and row t right of it start at the slot of the diagonal entry, in `lower` and
+  // `upper`. Such an element keeps d codes per block (the start of each run, checked against all its
+  // codes when the block is built): a third of the codes read per entry, no test per entry, and the
+  // upper triangle skipped by block where it is not stored.
+  static constexpr int kUnknowns = Kernel::kUnknowns, kRuns = kUnknowns * Kernel::kNodes * Kernel::kNodes;
+
+  /// The starts of the runs of an element's codes `code` into runs[0 … kRuns), block (a, b) at
+  /// kUnknowns · (a · nodes + b); false if its codes are not in runs.
+  bool find_runs(const int* code, int* runs) const {
+    constexpr int d = kUnknowns;
+    const int S = layout_.slots;
+    for (int a = 0; a < Kernel::kNodes; ++a)
+      for (int b = 0; b < Kernel::kNodes; ++b) {
+        int* r = runs + d * (a * Kernel::kNodes + b);
+        const auto at = [&](int k, int l) { return code[(d * a + k) * kDofs + d * b + l]; };
+        for (int t = 0; t < d; ++t) {
+          if (a == b) {
+            r[t] = at(t, t);
+            if (r[t] < 0 || r[t] + d - t > S) return false;
+            for (int k = t; k < d; ++k)
+              if (at(k, t) != r[t] + k - t) return false;
+            for (int l = t + 1; l < d; ++l)
+              if (at(t, l) != S + r[t] + l - t) return false;
+          } else if (at(0, 0) >= 0 && at(0, 0) < S) {  // below the diagonal: column t
+            r[t] = at(0, t);
+            if (r[t] < 0 || r[t] + d > S) return false;
+            for (int k = 0; k < d; ++k)
+              if (at(k, t) != r[t] + k) return false;
+          } else {  // above the diagonal: row t
+            r[t] = at(t, 0);
+            if (r[t] < S) return false;
+            for (int l = 0; l < d; ++l)
+              if (at(t, l) != r[t] + l) return false;
+          }
+        }
+      }
+    return true;
+  }
+
+  /// K_e added through the runs of an element (find_runs); the upper triangle only if `upper`.
+  void scatter_runs(const int* r, const Matrix& Ke, double* values, bool upper) const {
+    constexpr int d = kUnknowns;
+    using Run = Eigen::Map<Eigen::Matrix<double, d, 1>>;
+    const int S = layout_.slots;
+    for (int a = 0; a < Kernel::kNodes; ++a)
+      for (int b = 0; b < Kernel::kNodes; ++b, r += d) {
+        if (a == b) {
+          for (int t = 0; t < d; ++t) {
+            double* v = values + r[t];
+            for (int k = t; k < d; ++k) v[k - t] += Ke(d * a + k, d * a + t);
+            if (upper)
+              for (int l = t + 1; l < d; ++l) v[S + l - t] += Ke(d * a + t, d * a + l);
+          }
+        } else if (r[0] < S) {
+          for (int l = 0; l < d; ++l) Run(values + r[l]) += Ke.template block<d, 1>(d * a, d * b + l);
+        } else if (upper) {
+          for (int k = 0; k < d; ++k) Run(values + r[k]) += Ke.template block<1, d>(d * a + k, d * b).transpose();
+        }
+      }
+  }
+
   const Model& model_;
   const ElementBlock& block_;
   Kernel kernel_;
   BlockLayout layout_;
   std::vector<double> curvature_;
+  std::vector<char> compact_;  ///< per element: its codes are in runs (find_runs)
+  std::vector<int> runs_;      ///< per element, kRuns starts of runs (where compact_)
   int points_per_element_ = 0;
 };
 

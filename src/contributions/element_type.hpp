@@ -31,8 +31,12 @@ struct BlockLayout {
   /// (row of a, row of b) (linalg/tangent_layout.hpp: an index into the split storage, its lower
   /// triangle first; −1: not free-free).
   std::vector<int> scatter;
-  std::vector<int> order;         ///< element indices, colour by colour (no two of a colour share a node)
-  std::vector<int> colour_start;  ///< colour c is order[colour_start[c] … colour_start[c+1])
+  int slots = 0;  ///< the tangent's slots S (TangentLayout::slots): codes from S are the upper triangle's
+  /// The colouring: runs of consecutive elements, no two runs of a colour sharing a node, so that the
+  /// runs of a colour can be assembled in parallel and each run's elements in order, one after the other.
+  std::vector<int> order;         ///< element indices, run by run, the runs colour by colour
+  std::vector<int> run_start;     ///< run k is order[run_start[k] … run_start[k+1])
+  std::vector<int> colour_start;  ///< colour c is runs colour_start[c] … colour_start[c+1] − 1
 };
 
 /// Everything a block contribution is built from.

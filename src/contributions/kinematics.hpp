@@ -39,6 +39,11 @@ struct SpaceKinematics {
     for (int a = 0; a < N; ++a) s.x.col(a) = m.X[en[a]] + u.template segment<3>(3 * en[a]);
   }
   static int dof(const Model&, const int* en, int k) { return 3 * en[k / 3] + k % 3; }
+  /// R(dof(k)) += f(k) for every unknown k of the element: node by node, three at a time.
+  template <class Vector>
+  static void add(const Model&, const int* en, const Vector& f, Eigen::VectorXd& R) {
+    for (int a = 0; a < N; ++a) R.template segment<3>(3 * en[a]) += f.template segment<3>(3 * a);
+  }
 };
 
 /// The 2 nodes of an axisymmetric shell element: column a = (r, z, r′, z′) of node en[a], X from

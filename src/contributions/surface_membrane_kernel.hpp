@@ -27,6 +27,9 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
   void internal(int e, const State& s, Vector& f, Matrix* K) const { membrane3d<N>(refs[e], s.x, *part.material, f, K); }
   double length2(const Model& m, const int* en, const State&) const { return (m.X[en[1]] - m.X[en[0]]).squaredNorm(); }
   void pressure(const State& s, double p, Vector& f, Matrix* K) const { surface_pressure<N>(s.x, p, f, K); }
+  double subtract_pressure(const State& s, double p, Vector& f, Matrix* K) const {
+    return subtract_surface_pressure<N>(s.x, p, f, K);
+  }
   double volume(const State& s, const VolumeMeasure& how, Vector* grad) const { return enclosed_volume<N>(s.x, how, grad); }
   void start(int e, double T0, Matrix& K) const { normal_tension_stiffness<N>(refs[e], T0, K); }
   void points(int e, const State& s, std::vector<MembranePoint>& out) const {

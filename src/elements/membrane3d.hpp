@@ -44,9 +44,10 @@ constexpr double kMinTangentFraction = 1e-3;
 template <int N>
 struct MembraneReference {
   static constexpr int Q = SurfaceShapeTraits<N>::kPoints;
-  std::array<Eigen::Matrix<double, N, 1>, Q> shape;  ///< N_a at the Gauss point
+  // What the residual and tangent read first, side by side (the rest is for the Gauss-point output).
   std::array<Eigen::Matrix<double, N, 2>, Q> dNds;   ///< ∂N_a/∂s_i
   std::array<double, Q> weight{};                    ///< Gauss weight × dA₀ × H (reference volume)
+  std::array<Eigen::Matrix<double, N, 1>, Q> shape;  ///< N_a at the Gauss point
   std::array<Eigen::Vector3d, Q> X;                  ///< reference position
   std::array<Eigen::Vector3d, Q> e1, e2;             ///< material frame (unit, tangent)
   double thickness = 0;                              ///< reference thickness H

@@ -12,6 +12,9 @@
 //                     (δx_a ↦ (δE11, δE22, 2δE12)),
 //               f_a += weight B_aᵀ S                (= Σ_ij S_ij f_i ∂N_a/∂s_j),
 //               K_ab += weight [B_aᵀ D B_b + (Σ_ij S_ij ∂N_a/∂s_i ∂N_b/∂s_j) I₃];
+//               computed for the nodes a, b ≥ 1, K_ab for b ≥ a only (K is symmetric); node 0's
+//               from the others' (the partition of unity, Σ_a ∂N_a/∂s_i = 0):
+//               f_0 = −Σ_{a≥1} f_a,  K_0b = −Σ_{a≥1} K_ab,  K_00 = −Σ_{b≥1} K_0bᵀ;
 //   output:     σ = Σ_ij S_ij f_i f_jᵀ = F S Fᵀ (J = 1), σ_α = t_α·σ t_α with
 //               t_α = f_α/|f_α|, principal values of σ restricted to the
 //               current tangent plane, λ_α = √C_αα, λ₃ = √C33, h = λ₃ H.
@@ -101,8 +104,11 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
                 ElementVector<N>& f, ElementMatrix<N>* K,
                 std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints>* points) {
   constexpr int Q = SurfaceShapeTraits<N>::kPoints;
-  f.setZero();
-  if (K) K->setZero();
+  // Nodes 1 … N−1: f_a and K_ab are linear in ∂N_a/∂s (and K_ab in ∂N_b/∂s), and Σ_a ∂N_a/∂s = 0
+  // (Σ_a N_a = 1), so Σ_a f_a = 0 and Σ_a K_ab = 0: node 0's force and blocks follow from the others'
+  // after the Gauss loop.
+  constexpr int M = N - 1;
+  Eigen::Matrix<double, 3, M> fr = Eigen::Matrix<double, 3, M>::Zero();  // column a − 1 is f_a
   for (int q = 0; q < Q; ++q) {
     const Eigen::Matrix<double, N, 2>& dN = ref.dNds[q];
     const Eigen::Matrix<double, 3, 2> F = x * dN;  // columns f_i = ∂x/∂s_i
@@ -112,27 +118,35 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
       throw std::domain_error("3-D membrane: in-plane det C is not positive at a Gauss point (element collapsed)");
     const MembraneResponse m = membrane_response(material, C);
     const double w = ref.weight[q];
+    Eigen::Matrix2d S2;  // S as a 2 × 2 tensor
+    S2 << m.S(0), m.S(2), m.S(2), m.S(1);
+    const Eigen::Matrix2d wS2 = w * S2;
+    const auto dNr = dN.template bottomRows<M>();  // ∂N_a/∂s of nodes 1 … N−1
 
-    // B: δx ↦ (δE11, δE22, 2δE12), node-major columns.
-    Eigen::Matrix<double, 3, 3 * N> B;
-    for (int a = 0; a < N; ++a) {
-      B.template block<1, 3>(0, 3 * a) = dN(a, 0) * f1.transpose();
-      B.template block<1, 3>(1, 3 * a) = dN(a, 1) * f2.transpose();
-      B.template block<1, 3>(2, 3 * a) = dN(a, 1) * f1.transpose() + dN(a, 0) * f2.transpose();
-    }
-    f.noalias() += w * (B.transpose() * m.S);
+    // (5.6): f_a += w B_aᵀ S = w Σ_ij S_ij f_i ∂N_a/∂s_j, i.e. (f_1 … f_{N−1}) += (F w S₂) ∂N/∂sᵀ.
+    fr.noalias() += (F * wS2) * dNr.transpose();
     if (K) {
-      // Material part Bᵀ D B and geometric part (∂N_a/∂s · S ∂N_b/∂s) I₃.
-      const Eigen::Matrix<double, 3, 3 * N> DB = m.D * B;
-      // lazyProduct: a coefficient-wise fixed-size product (the default for 3N×3×3N would
-      // go through the dynamic-size GEMM kernel, half of this function's cost).
-      K->noalias() += w * B.transpose().lazyProduct(DB);
-      Eigen::Matrix2d S2;
-      S2 << m.S(0), m.S(2), m.S(2), m.S(1);
-      const Eigen::Matrix<double, N, N> Gm = dN * S2 * dN.transpose();
-      for (int a = 0; a < N; ++a)
-        for (int b = 0; b < N; ++b)
-          for (int k = 0; k < 3; ++k) (*K)(3 * a + k, 3 * b + k) += w * Gm(a, b);
+      // (5.6) with B_a = β_a1 f1ᵀ + β_a2 f2ᵀ, β_a1 = (∂N_a/∂s_1, 0, ∂N_a/∂s_2), β_a2 = (0, ∂N_a/∂s_2, ∂N_a/∂s_1):
+      //   K_ab = w B_aᵀ D B_b + G_ab I₃ = Σ_ij M_ij f_i f_jᵀ + G_ab I₃ = f1 uᵀ + f2 vᵀ + G_ab I₃,
+      //   M_ij = w β_aiᵀ D β_bj,  u = M_11 f1 + M_12 f2,  v = M_21 f1 + M_22 f2,  G_ab = w ∂N_a/∂s · S ∂N_b/∂s,
+      // for 1 ≤ a ≤ b (D and S are symmetric: K_ba = K_abᵀ).
+      const Eigen::Matrix3d wD = w * m.D;
+      for (int b = 1; b < N; ++b) {
+        const double n1 = dN(b, 0), n2 = dN(b, 1);
+        const Eigen::Vector3d Dbeta1 = n1 * wD.col(0) + n2 * wD.col(2), Dbeta2 = n2 * wD.col(1) + n1 * wD.col(2);
+        const Eigen::Vector2d Sb = wS2 * dN.row(b).transpose();
+        for (int a = 1; a <= b; ++a) {
+          const double m1 = dN(a, 0), m2 = dN(a, 1);
+          const double M11 = m1 * Dbeta1(0) + m2 * Dbeta1(2), M21 = m2 * Dbeta1(1) + m1 * Dbeta1(2);
+          const double M12 = m1 * Dbeta2(0) + m2 * Dbeta2(2), M22 = m2 * Dbeta2(1) + m1 * Dbeta2(2);
+          const Eigen::Vector3d u = M11 * f1 + M12 * f2, v = M21 * f1 + M22 * f2;
+          Eigen::Matrix3d Kab = f1 * u.transpose() + f2 * v.transpose();
+          Kab.diagonal().array() += m1 * Sb(0) + m2 * Sb(1);
+          auto out = K->template block<3, 3>(3 * a, 3 * b);
+          if (q == 0) out = Kab;  // every one of these blocks is set at the first Gauss point
+          else out += Kab;
+        }
+      }
     }
     if (points) {
       MembranePoint& p = (*points)[q];
@@ -144,8 +158,6 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
       p.lambda = Eigen::Vector3d(std::sqrt(C(0)), std::sqrt(C(1)), std::sqrt(m.C33));
       p.E = Eigen::Vector3d(0.5 * (C(0) - 1.0), 0.5 * (C(1) - 1.0), 0.5 * C(2));
       p.S = m.S;
-      Eigen::Matrix2d S2;
-      S2 << m.S(0), m.S(2), m.S(2), m.S(1);
       p.cauchy = F * S2 * F.transpose();  // σ = F S Fᵀ / J, J = 1
       // σ_α = t_α·σ t_α = (f_α·σ f_α)/C_αα.
       p.sigma = Eigen::Vector2d(f1.dot(p.cauchy * f1) / C(0), f2.dot(p.cauchy * f2) / C(1));
@@ -161,6 +173,27 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
       p.W = m.W;
       p.weight = w;
     }
+  }
+  // Node 0: f_0 = −Σ_{a≥1} f_a.
+  f.template head<3>() = -fr.rowwise().sum();
+  f.template tail<3 * M>() = fr.reshaped();
+  if (K) {
+    const auto block = [&](int a, int b) { return K->template block<3, 3>(3 * a, 3 * b); };
+    // Below the diagonal, nodes 1 … N−1: K_ba = K_abᵀ.
+    for (int b = 1; b < N; ++b)
+      for (int a = 1; a < b; ++a) block(b, a) = block(a, b).transpose();
+    // K_0b = −Σ_{a≥1} K_ab and K_b0 = K_0bᵀ (b ≥ 1).
+    for (int b = 1; b < N; ++b) {
+      Eigen::Matrix3d k0b = -block(1, b);
+      for (int a = 2; a < N; ++a) k0b -= block(a, b);
+      block(0, b) = k0b;
+      block(b, 0) = k0b.transpose();
+    }
+    // K_00 = −Σ_{b≥1} K_b0, symmetric: its upper triangle, mirrored.
+    Eigen::Matrix3d k00 = -block(1, 0);
+    for (int b = 2; b < N; ++b) k00 -= block(b, 0);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i <= j; ++i) (*K)(i, j) = (*K)(j, i) = k00(i, j);
   }
 }
 

@@ -28,6 +28,13 @@ namespace tunica {
 template <int N>
 void surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& f, ElementMatrix<N>* dfdx);
 
+/// The same load subtracted in place, as the element loop forms R_e = f_int − f_p and
+/// K_e = K − ∂f_p/∂x (theory manual (6.3)): r −= f and, if K is given, K −= ∂f/∂x, with f and
+/// ∂f/∂x those of surface_pressure; returns ‖f‖² (the element's term of the round-off yardstick).
+/// No 3N × 3N load matrix is formed: ∂f_a/∂x_b is a cross-product matrix, subtracted entry by entry.
+template <int N>
+double subtract_surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& r, ElementMatrix<N>* K);
+
 /// How an enclosed volume is measured (see above).
 struct VolumeMeasure {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< p₀

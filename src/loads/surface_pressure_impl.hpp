@@ -3,7 +3,7 @@
 // (surface_pressure.hpp; theory manual (6.4)–(6.6)). With g_α = Σ_a x_a ∂N_a/∂ξ^α and n = g1 × g2 (per unit
 // parametric area), at each Gauss point (weight w):
 //   pressure:  f_a = p Σ_q w N_a n,
-//              ∂f_a/∂x_b = p Σ_q w N_a (∂N_b/∂η [g1]× − ∂N_b/∂ξ [g2]×),
+//              ∂f_a/∂x_b = p Σ_q w N_a (∂N_b/∂η [g1]× − ∂N_b/∂ξ [g2]×) = p Σ_q w N_a [∂N_b/∂η g1 − ∂N_b/∂ξ g2]×,
 //              from δn = δg1 × g2 + g1 × δg2, [v]× u = v × u;
 //   volume:    V_e = c Σ_q w (P y)·n,  y = x − p₀,
 //              c = ⅓, P = I (about a point) or c = ½, P = I − a aᵀ (about an axis),
@@ -52,6 +52,41 @@ void surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& f, E
       }
     }
   }
+}
+
+template <int N>
+double subtract_surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& r, ElementMatrix<N>* K) {
+  constexpr int Q = SurfaceShapeTraits<N>::kPoints;
+  ElementVector<N> f = ElementVector<N>::Zero();
+  for (int q = 0; q < Q; ++q) {
+    double xi, eta, w;
+    gauss_point<N>(q, xi, eta, w);
+    const Eigen::Matrix<double, N, 1> Nq = shape_values<N>(xi, eta);
+    const Eigen::Matrix<double, N, 2> dN = shape_derivatives<N>(xi, eta);
+    const Eigen::Matrix<double, 3, 2> g = x * dN;
+    const Eigen::Vector3d n = g.col(0).cross(g.col(1));
+    for (int a = 0; a < N; ++a) f.template segment<3>(3 * a) += (p * w * Nq(a)) * n;  // (6.4)
+    if (K) {
+      // (6.5): ∂n/∂x_b = ∂N_b/∂η [g1]× − ∂N_b/∂ξ [g2]× = [v_b]×, v_b = ∂N_b/∂η g1 − ∂N_b/∂ξ g2, and
+      // ∂f_a/∂x_b = p w N_a [v_b]×: a skew block, zero on its diagonal. Its six entries are
+      // subtracted from K in place (entry (i, j) of [v]× is −ε_ijk v_k).
+      for (int b = 0; b < N; ++b) {
+        const Eigen::Vector3d v = dN(b, 1) * g.col(0) - dN(b, 0) * g.col(1);
+        for (int a = 0; a < N; ++a) {
+          const double c = p * w * Nq(a);
+          auto Kab = K->template block<3, 3>(3 * a, 3 * b);
+          Kab(0, 1) += c * v.z();
+          Kab(1, 0) -= c * v.z();
+          Kab(0, 2) -= c * v.y();
+          Kab(2, 0) += c * v.y();
+          Kab(1, 2) += c * v.x();
+          Kab(2, 1) -= c * v.x();
+        }
+      }
+    }
+  }
+  r -= f;
+  return f.squaredNorm();
 }
 
 template <int N>

@@ -7,6 +7,7 @@
 namespace tunica {
 
 template void surface_pressure<6>(const SurfaceNodes<6>&, double, ElementVector<6>&, ElementMatrix<6>*);
+template double subtract_surface_pressure<6>(const SurfaceNodes<6>&, double, ElementVector<6>&, ElementMatrix<6>*);
 template double enclosed_volume<6>(const SurfaceNodes<6>&, const VolumeMeasure&, ElementVector<6>*);
 
 }  // namespace tunica

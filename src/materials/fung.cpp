@@ -8,7 +8,15 @@
 
 namespace tunica {
 
-FungMaterial::FungMaterial(double c, const Eigen::Matrix3d& A, double a7) : c_(c), A_(A), a7_(a7) {}
+FungMaterial::FungMaterial(double c, const Eigen::Matrix3d& A, double a7) : c_(c), A_(A), a7_(a7) {
+  // d²Q/dv², constant (Q is quadratic in v): d²Q/dC_ii dC_jj = A_ij/2 (dE_i/dC_ii = ½), d²Q/dv3² = a7/2
+  // (a7 E12² = a7 v3²/4), zero elsewhere.
+  const int map[3] = {0, 1, 3};  // E1, E2, E3 -> v index
+  d2Q_.setZero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) d2Q_(map[i], map[j]) = 0.5 * A_(i, j);
+  d2Q_(2, 2) = 0.5 * a7_;
+}
 
 bool FungMaterial::is_convex(const Eigen::Matrix3d& A, double a7) {
   if (a7 < 0) return false;
@@ -19,24 +27,16 @@ bool FungMaterial::is_convex(const Eigen::Matrix3d& A, double a7) {
 }
 
 EnergyDerivatives FungMaterial::energy(const Eigen::Vector4d& v) const {
-  // e = (E1, E2, E3); Q = eᵀ A e + a7 E12², E12 = v(2)/2.
+  // Theory manual (3.1): e = (E1, E2, E3); Q = eᵀ A e + a7 E12², E12 = v(2)/2.
   const Eigen::Vector3d e(0.5 * (v(0) - 1.0), 0.5 * (v(1) - 1.0), 0.5 * (v(3) - 1.0));
   const double e12 = 0.5 * v(2);
-  const double Q = e.dot(A_ * e) + a7_ * e12 * e12;
-  // dQ/dv: dQ/dC_ii = (A e)_i since dE_i/dC_ii = ½; a7 E12² = a7 v3²/4 gives dQ/dv3 = a7 E12, d²Q/dv3² = a7/2.
   const Eigen::Vector3d Ae = A_ * e;
-  Eigen::Vector4d dQ(Ae(0), Ae(1), a7_ * e12, Ae(2));
-  Eigen::Matrix4d d2Q = Eigen::Matrix4d::Zero();
-  const int map[3] = {0, 1, 3};  // E1, E2, E3 -> v index
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) d2Q(map[i], map[j]) = 0.5 * A_(i, j);
-  d2Q(2, 2) = 0.5 * a7_;
-  const double eQ = std::exp(Q);
-  EnergyDerivatives out;
-  out.W = c_ * (eQ - 1.0);
-  out.dW = c_ * eQ * dQ;
-  out.d2W = c_ * eQ * (dQ * dQ.transpose() + d2Q);
-  return out;
+  const double Q = e.dot(Ae) + a7_ * e12 * e12;
+  // dQ/dv: dQ/dC_ii = (A e)_i since dE_i/dC_ii = ½; a7 E12² = a7 v3²/4 gives dQ/dv3 = a7 E12 (d²Q: the constructor).
+  const Eigen::Vector4d dQ(Ae(0), Ae(1), a7_ * e12, Ae(2));
+  const double eQ = std::exp(Q), ceQ = c_ * eQ;
+  // W, dW = c e^Q dQ, d²W = c e^Q (dQ dQᵀ + d²Q).
+  return {.W = c_ * (eQ - 1.0), .dW = ceQ * dQ, .d2W = ceQ * (dQ * dQ.transpose() + d2Q_)};
 }
 
 namespace {

@@ -25,6 +25,7 @@ private:
   double c_;
   Eigen::Matrix3d A_;
   double a7_;
+  Eigen::Matrix4d d2Q_;  ///< d²Q/dv², constant
 };
 
 }  // namespace tunica

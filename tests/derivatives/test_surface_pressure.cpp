@@ -1,6 +1,7 @@
 // Checks of the 3-D follower pressure and the enclosed volume (surface_pressure.hpp):
 //  - per element, ∂f/∂x and ∂V_e/∂x (about a point and about an axis) against
 //    finite differences (relative error below 1e-6), tri3, quad4 and tri6;
+//  - the in-place subtraction the element loop uses (subtract_surface_pressure) against them;
 //  - on closed surfaces (octahedron of triangles, cube of quadrilaterals and
 //    its triangulation, octahedron of 6-node triangles, all with perturbed nodes: the
 //    last one curved) the assembled pressure force is p ∂V/∂x and the assembled load
@@ -10,6 +11,7 @@
 //    an open prism (polygon area × length).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -233,7 +235,53 @@ void check_element_derivatives(std::mt19937& rng, double& max_df, double& max_dv
   }
 }
 
+/// subtract_surface_pressure, the in-place form the element loop uses, against surface_pressure:
+/// r − f, K − ∂f/∂x and ‖f‖², on random r and K; and its stiffness against finite differences.
+template <int N>
+void check_in_place(std::mt19937& rng, double& max_diff) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 20; ++k) {
+    const SurfaceNodes<N> x = random_element<N>(rng);
+    const double p = 0.3 + u(rng);
+    ElementVector<N> f;
+    ElementMatrix<N> d;
+    surface_pressure<N>(x, p, f, &d);
+    const ElementVector<N> r0 = ElementVector<N>::NullaryExpr([&] { return u(rng); });
+    const ElementMatrix<N> K0 = ElementMatrix<N>::NullaryExpr([&] { return u(rng); });
+    ElementVector<N> r = r0;
+    ElementMatrix<N> K = K0;
+    const double f2 = subtract_surface_pressure<N>(x, p, r, &K);
+    const double er = relative_error(r, r0 - f), eK = relative_error(K, K0 - d);
+    EXPECT_LT(er, 1e-15) << "N=" << N;
+    EXPECT_LT(eK, 1e-15) << "N=" << N;
+    EXPECT_NEAR(f2, f.squaredNorm(), 1e-15 * f.squaredNorm()) << "N=" << N;
+    max_diff = std::max({max_diff, er, eK});
+    // Without K, the residual alone; from K = 0, minus the load stiffness.
+    ElementVector<N> r1 = r0;
+    subtract_surface_pressure<N>(x, p, r1, nullptr);
+    EXPECT_EQ(r1, r) << "N=" << N;
+    ElementMatrix<N> K1 = ElementMatrix<N>::Zero();
+    ElementVector<N> r2 = ElementVector<N>::Zero();
+    subtract_surface_pressure<N>(x, p, r2, &K1);
+    const auto minus_force = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
+      ElementVector<N> g = ElementVector<N>::Zero();
+      subtract_surface_pressure<N>(nodes<N>(v), p, g, nullptr);
+      return g;
+    };
+    EXPECT_LT(relative_error(K1, fd_jacobian(minus_force, flat<N>(x), 1e-6)), 1e-6) << "N=" << N;
+  }
+}
+
 }  // namespace
+
+TEST(SurfacePressure, InPlaceSubtractionIsTheLoadAndItsStiffness) {
+  std::mt19937 rng(25);
+  double diff = 0;
+  check_in_place<3>(rng, diff);
+  check_in_place<4>(rng, diff);
+  check_in_place<6>(rng, diff);
+  std::cout << "subtract_surface_pressure: max relative difference from surface_pressure " << diff << "\n";
+}
 
 TEST(SurfacePressure, LoadStiffnessAndVolumeGradientMatchFiniteDifferences) {
   std::mt19937 rng(21);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -87,24 +88,41 @@ Eigen::VectorXd solve(const std::string& deck, Log* log = nullptr, int threads =
   return analysis.displacement();
 }
 
-TEST(Colouring, NoTwoElementsOfAColourShareANode) {
+TEST(Colouring, NoTwoRunsOfAColourShareANode) {
   for (const std::string shape : {"quad", "triangle"}) {
     const Model model = read_deck_text(sphere_deck("auto", "exact", shape), "test.yaml");
     for (const auto& part : model.parts)
       for (const auto& block : part.blocks) {
-        std::vector<int> order, start;
-        colour_elements(block, model.num_nodes(), order, start);
-        ASSERT_EQ(static_cast<int>(order.size()), block.size());
+        BlockLayout layout;
+        colour_elements(block, model.num_nodes(), layout);
+        ASSERT_EQ(static_cast<int>(layout.order.size()), block.size());
         std::vector<int> seen(block.size(), 0);
-        for (int e : order) ++seen[e];
+        for (int e : layout.order) ++seen[e];
         for (int s : seen) EXPECT_EQ(s, 1);  // every element exactly once
-        EXPECT_LE(start.size(), 20u) << shape;  // a handful of colours for a surface mesh
-        for (std::size_t c = 0; c + 1 < start.size(); ++c) {
-          std::set<int> nodes;
-          for (int k = start[c]; k < start[c + 1]; ++k) {
-            const int* en = block.element(order[k]);
-            for (int a = 0; a < nodes_per_element(block.kind); ++a) EXPECT_TRUE(nodes.insert(en[a]).second);
-          }
+        const int runs = static_cast<int>(layout.run_start.size()) - 1;
+        EXPECT_EQ(layout.run_start.front(), 0);
+        EXPECT_EQ(layout.run_start.back(), block.size());
+        EXPECT_EQ(layout.colour_start.front(), 0);
+        EXPECT_EQ(layout.colour_start.back(), runs);
+        EXPECT_LE(layout.colour_start.size(), 20u) << shape;  // a handful of colours for a surface mesh
+        // Each run: consecutive elements, ascending, at most colour_run_length of them.
+        const int length = colour_run_length(block.size());
+        for (int r = 0; r < runs; ++r) {
+          EXPECT_LE(layout.run_start[r + 1] - layout.run_start[r], length);
+          for (int k = layout.run_start[r] + 1; k < layout.run_start[r + 1]; ++k)
+            EXPECT_EQ(layout.order[k], layout.order[k - 1] + 1);
+        }
+        // No node in two runs of a colour.
+        for (std::size_t c = 0; c + 1 < layout.colour_start.size(); ++c) {
+          std::map<int, int> run_of;  // node -> run
+          for (int r = layout.colour_start[c]; r < layout.colour_start[c + 1]; ++r)
+            for (int k = layout.run_start[r]; k < layout.run_start[r + 1]; ++k) {
+              const int* en = block.element(layout.order[k]);
+              for (int a = 0; a < nodes_per_element(block.kind); ++a) {
+                const auto [it, added] = run_of.emplace(en[a], r);
+                EXPECT_EQ(it->second, r) << "node " << en[a] << " in runs " << it->second << " and " << r;
+              }
+            }
         }
       }
   }
