@@ -16,10 +16,11 @@ B=./build/tunica-bench
 mkdir -p results/bench
 CSV=results/bench/bench.csv
 rm -f "$CSV"
-export OMP_NUM_THREADS=2
+# The tables are for 2 threads (the machine's cores); THREADS=N runs them on N.
+B="$B --threads ${THREADS:-2}"
 for t in 10000 100000; do $B tube --triangles $t --csv "$CSV"; done
 $B tube --triangles 100000 --paired --csv "$CSV"
-$B tube --triangles 100000 --threads 1 --csv "$CSV"
+./build/tunica-bench tube --triangles 100000 --threads 1 --csv "$CSV"
 $B tube --triangles 100000 --solver umfpack --csv "$CSV"
 $B tube --triangles 100000 --symmetrized --csv "$CSV"
 for n in 14 20 41 58; do $B sphere --n $n --csv "$CSV"; done
