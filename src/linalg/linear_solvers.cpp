@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "linalg/cholmod_lower_view.hpp"
 #include "linalg/compute_threads.hpp"
 #include "linalg/matrix_symmetry.hpp"
 
@@ -106,18 +107,8 @@ private:
     if (layout.size() == 0) return true;
     permuted_.resize(static_cast<std::size_t>(layout.slots()));
     layout.to_cholmod(K.lower(), permuted_.data());
-    cholmod_sparse S{};
-    S.nrow = S.ncol = static_cast<std::size_t>(layout.size());
-    S.nzmax = static_cast<std::size_t>(layout.slots());
-    S.p = const_cast<int*>(layout.cholmod_outer().data());
-    S.i = const_cast<int*>(layout.cholmod_inner().data());
-    S.x = permuted_.data();
-    S.stype = -1;
-    S.itype = CHOLMOD_INT;
-    S.xtype = CHOLMOD_REAL;
-    S.dtype = CHOLMOD_DOUBLE;
-    S.sorted = 1;
-    S.packed = 1;
+    cholmod_sparse S = cholmod_lower_view(layout.size(), layout.slots(), layout.cholmod_outer().data(),
+                                          layout.cholmod_inner().data(), permuted_.data());
     double beta[2] = {0.0, 0.0};
     cholmod_super_numeric(&S, nullptr, beta, factor_, &common_);
     if (common_.status == CHOLMOD_INVALID) throw std::logic_error("CHOLMOD: the split tangent is not a valid lower triangle");

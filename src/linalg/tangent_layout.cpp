@@ -6,6 +6,7 @@
 #include <climits>
 #include <stdexcept>
 
+#include "linalg/cholmod_lower_view.hpp"
 #include "linalg/compute_threads.hpp"
 
 namespace tunica {
@@ -47,18 +48,8 @@ TangentLayout::TangentLayout(SparseMatrix pattern) : pattern_(std::move(pattern)
   perm.assign(static_cast<std::size_t>(n), 0);
   if (n > 0) {
     cholmod_ = std::make_unique<Cholmod>();
-    cholmod_sparse A{};
-    A.nrow = A.ncol = static_cast<std::size_t>(n);
-    A.nzmax = static_cast<std::size_t>(pattern_.nonZeros());
-    A.p = pattern_.outerIndexPtr();
-    A.i = pattern_.innerIndexPtr();
-    A.x = pattern_.valuePtr();
-    A.stype = -1;
-    A.itype = CHOLMOD_INT;
-    A.xtype = CHOLMOD_REAL;
-    A.dtype = CHOLMOD_DOUBLE;
-    A.sorted = 1;
-    A.packed = 1;
+    cholmod_sparse A = cholmod_lower_view(n, pattern_.nonZeros(), pattern_.outerIndexPtr(),
+                                          pattern_.innerIndexPtr(), pattern_.valuePtr());
     {
       const SerialOpenMP serial;  // CHOLMOD's own loops on the calling thread (linalg/compute_threads.hpp)
       cholmod_->factor = cholmod_analyze(&A, &cholmod_->common);
