@@ -59,7 +59,16 @@ int default_compute_threads() {
 void start_with_thread_environment(int n, char** argv) {
   if (n < 1) n = 1;
   const std::string count = std::to_string(n);
-  if (const char* prepared = std::getenv("TUNICA_THREADS"); prepared && count == prepared) return;
+  // Started again already: the marker and the settings it stands for are all in place (a marker
+  // left in the environment by a wrapper, without the settings, does not skip the start: OpenBLAS
+  // would have started its pool when it loaded).
+  const auto is = [](const char* name, const std::string& value) {
+    const char* v = std::getenv(name);
+    return v && value == v;
+  };
+  if (is("TUNICA_THREADS", count) && is("OMP_NUM_THREADS", count) && is("OMP_THREAD_LIMIT", count) &&
+      is("OPENBLAS_NUM_THREADS", "1"))
+    return;
   // Valgrind follows an exec only with --trace-children=yes: under it the run goes on as started,
   // or valgrind would watch nothing of it.
   if (const char* preload = std::getenv("LD_PRELOAD"); preload && std::strstr(preload, "vgpreload")) return;

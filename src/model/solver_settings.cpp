@@ -64,11 +64,12 @@ const ComponentSpec& solver_settings_spec() {
                                   "when a Newton correction is solved with the factorization of an earlier iteration "
                                   "of the increment instead of a new one (a modified Newton step): last = when that "
                                   "correction is predicted to converge (twice the last ratio ‖R_k‖/‖R_k−1‖ times "
-                                  "‖R_k‖ within `residual_tolerance`), which saves a factorization without adding an "
-                                  "iteration; basin = whenever ‖R‖ ≤ 1e-4 ‖R₀‖ and the last correction cut ‖R‖ "
+                                  "‖R_k‖ within `residual_tolerance`), which saves a factorization, mostly without adding an "
+                                  "iteration (when the prediction misses, the next iteration factorizes); basin = whenever ‖R‖ ≤ 1e-4 ‖R₀‖ and the last correction cut ‖R‖ "
                                   "tenfold, fewer factorizations for an iteration or two more (large models, where "
                                   "the factorization is the iteration); never = a new factorization every iteration "
-                                  "(the plain Newton method, quadratic to the end)"),
+                                  "(the plain Newton method, quadratic to the end). No correction that leads to the last "
+                                  "iteration `max_iterations` allows is solved with an earlier factorization"),
                              {"last", "basin", "never"}),
                       reuse_name(d.reuse_factorization)),
          with_default(at_least(number("divergence_ratio", Dimension::dimensionless,

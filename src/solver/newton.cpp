@@ -142,8 +142,10 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
     // A reused factorization, (7.11): the correction is solved with the factorization of an
     // earlier iteration of this attempt. One that is not finite or beyond the credible size is
     // solved afresh; one that converges poorly makes the next iteration factorize (its ratio fails
-    // the test).
+    // the test). Not for the last iterate the limit allows: a correction that converges less
+    // than predicted there would fail the attempt.
     if (factored && problem.allows_factorization_reuse() && rec.active_changes == 0 && n >= 2 &&
+        k + 1 < settings.max_iterations &&
         reuse_pays(settings, rec.relative_residual, residuals[n - 1] / residuals[n - 2])) {
       const auto t = std::chrono::steady_clock::now();
       dx = solver.solve(-r);

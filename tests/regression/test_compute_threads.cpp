@@ -66,10 +66,16 @@ struct Sampled {
 /// thread that was created and never ran does not count. The samples start once the run writes
 /// newton.csv, after the start-up: `tunica` executes itself once more with its thread settings in
 /// the environment (linalg/compute_threads.hpp), and the first image's threads end with it.
-Sampled run_sampled(const std::string& deck, const fs::path& out, int n) {
+/// With `marker`, the child starts with TUNICA_THREADS=n in its environment and nothing else of
+/// the thread settings, as a wrapper script may leave it.
+Sampled run_sampled(const std::string& deck, const fs::path& out, int n, bool marker = false) {
   const std::string threads = std::to_string(n);
   const pid_t pid = fork();
   if (pid == 0) {
+    if (marker) {
+      setenv("TUNICA_THREADS", threads.c_str(), 1);
+      for (const char* v : {"OMP_NUM_THREADS", "OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS"}) unsetenv(v);
+    }
     const int devnull = open("/dev/null", O_WRONLY);
     dup2(devnull, 1);
     dup2(devnull, 2);
@@ -148,6 +154,12 @@ TEST(ComputeThreads, ARunComputesOnNoMoreThreadsThanItsCount) {
     // Not more than n; and n, not fewer: the element loops do use the threads they are given.
     EXPECT_EQ(s.most, n) << "-j " << n << ": " << s.samples << " samples, the most compute threads in one:"
                          << s.at_most;
+    // TUNICA_THREADS left in the environment without the settings it marks: still n.
+    const Sampled m = run_sampled(deck, dir / ("marker" + std::to_string(n)), n, true);
+    ASSERT_EQ(m.exit_code, 0) << "-j " << n << ", TUNICA_THREADS preset";
+    ASSERT_GT(m.samples, 10) << "-j " << n << ", TUNICA_THREADS preset: the run ended before it could be observed";
+    EXPECT_LE(m.most, n) << "-j " << n << ", TUNICA_THREADS preset: " << m.samples
+                         << " samples, the most compute threads in one:" << m.at_most;
   }
 }
 

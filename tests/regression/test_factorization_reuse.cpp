@@ -25,9 +25,10 @@ struct ReuseRun {
   Capture capture;
 };
 
-ReuseRun run(const std::string& reuse, int increments, int prestretch_increments) {
+ReuseRun run(const std::string& reuse, int increments, int prestretch_increments, const std::string& more = "") {
   const Model model = read_deck_text(
-      fung_tube_deck(24, fmt::format("solver: {{reuse_factorization: {}}}\n", reuse), increments, prestretch_increments),
+      fung_tube_deck(24, fmt::format("solver: {{reuse_factorization: {}{}}}\n", reuse, more), increments,
+                     prestretch_increments),
       "tube-" + reuse + ".yaml");
   Analysis a(model);
   ReuseRun r;
@@ -85,4 +86,21 @@ TEST(FactorizationReuse, AReusedCorrectionFollowsAFactorizationOfTheSameAttemptI
     EXPECT_LE(r.residual, 0.1 * its[i - 1].rec.residual) << "the last correction cut ‖R‖ tenfold";
   }
   EXPECT_GT(reused, 0);
+}
+
+TEST(FactorizationReuse, NoReusedCorrectionLeadsToTheLastIterationAllowed) {
+  // A reused correction converges less surely than a Newton one (7.12): the last iterate the
+  // limit allows always comes from a fresh factorization.
+  constexpr int kLimit = 5;
+  const ReuseRun basin = run("basin", 6, 4, fmt::format(", max_iterations: {}", kLimit));
+  ASSERT_TRUE(basin.converged);
+  int reused = 0, at_limit = 0;
+  for (const auto& it : basin.capture.iterations) {
+    if (it.rec.iteration + 1 == kLimit && !it.rec.solver.empty()) ++at_limit;
+    if (it.rec.solver.find(kReusedFactorization) == std::string::npos) continue;
+    ++reused;
+    EXPECT_LT(it.rec.iteration + 1, kLimit) << "step " << it.info.step << " increment " << it.info.increment;
+  }
+  EXPECT_GT(reused, 0);
+  EXPECT_GT(at_limit, 0) << "some increment needs the last iteration allowed, or the test shows nothing";
 }
