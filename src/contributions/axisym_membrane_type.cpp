@@ -1,6 +1,7 @@
 // The 2-node axisymmetric membrane (elements/axisym_membrane.hpp, theory manual §3) with the
 // follower pressure on its meridian segment (loads/axisym_pressure.hpp, §6) and the enclosed
 // volume V_e = π ∫ r² dz = π Δz (r₁² + r₁r₂ + r₂²)/3 of a straight segment ((6.7)).
+#include <algorithm>
 #include <numbers>
 
 #include "contributions/element_loop.hpp"
@@ -22,7 +23,9 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
   void internal(int, const State& s, Vector& f, Matrix* K) const {
     axisym_membrane(s.X, s.x, part.thickness, *part.material, f, K);
   }
-  double length2(const Model&, const int*, const State& s) const { return (s.X.col(1) - s.X.col(0)).squaredNorm(); }
+  double length2(const Model&, const int*, const State& s) const {
+    return std::max((s.X.col(1) - s.X.col(0)).squaredNorm(), s.x.colwise().squaredNorm().maxCoeff());
+  }
   void pressure(const State& s, double p, Vector& f, Matrix* K) const { axisym_pressure(s.x, p, f, K); }
   double volume(const State& s, const VolumeMeasure&, Vector* grad) const {
     const double r1 = s.x(0, 0), r2 = s.x(0, 1), dz = s.x(1, 1) - s.x(1, 0);

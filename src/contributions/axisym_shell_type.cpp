@@ -24,7 +24,8 @@ struct AxisymShellKernel : ShellKinematics {
     axisym_shell(s.X, s.x, part.thickness, *part.material, f, K, quadrature);
   }
   double length2(const Model&, const int*, const State& s) const {
-    return (s.X.block<2, 1>(0, 1) - s.X.block<2, 1>(0, 0)).squaredNorm();
+    return std::max((s.X.block<2, 1>(0, 1) - s.X.block<2, 1>(0, 0)).squaredNorm(),
+                    s.x.topRows<2>().colwise().squaredNorm().maxCoeff());
   }
   void pressure(const State& s, double p, Vector& f, Matrix* K) const { axisym_shell_pressure(s.X, s.x, p, f, K); }
   double volume(const State& s, const VolumeMeasure&, Vector* grad) const { return axisym_shell_volume(s.X, s.x, grad); }

@@ -19,7 +19,9 @@ struct AxisymSolidKernel : PlaneKinematics<4> {
     axisym_solid(s.X, s.x, *part.solid_material, part.formulation, f, K);
   }
   // The element's diagonal.
-  double length2(const Model&, const int*, const State& s) const { return (s.X.col(2) - s.X.col(0)).squaredNorm(); }
+  double length2(const Model&, const int*, const State& s) const {
+    return std::max((s.X.col(2) - s.X.col(0)).squaredNorm(), s.x.colwise().squaredNorm().maxCoeff());
+  }
   void points(int, const State& s, std::vector<SolidPoint>& out) const {
     Vector f;
     std::array<SolidPoint, 4> pts;

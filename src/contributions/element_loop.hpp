@@ -10,7 +10,8 @@
 //     static constexpr bool kSolid;                // Gauss-point states are SolidPoint
 //     explicit Kernel(const BlockContext&);        // reference data, the part's material
 //     void internal(int e, const State&, Vector& f, Matrix* K) const;
-//     double length2(const Model&, const int* en, const State&) const;  // L_e² of the round-off yardstick
+//     double length2(const Model&, const int* en, const State&) const;  // L_e² of the round-off yardstick:
+//                                      // the larger of the element's length² and its nodes' largest |x|²
 //     void pressure(const State&, double p, Vector& f, Matrix* K) const;             // if kPressure
 //     double subtract_pressure(const State&, double p, Vector& f, Matrix* K) const;  // optional: f −= f_p,
 //                                      // K −= ∂f_p/∂u in place, returns ‖f_p‖² (else pressure() and a subtraction)
@@ -124,7 +125,9 @@ public:
           }
         }
       }
-      // Stiffness × element size bounds the round-off of stresses computed near zero strain.
+      // Stiffness × L_e bounds the round-off of the forces: near zero strain that of the stresses,
+      // and positions held to a relative precision give an element at |x| from the origin strains
+      // with round-off ε|x|/h (user guide §6, round-off).
       if (K) s2 += Ke.colwise().squaredNorm().sum() * kernel_.length2(model_, en, s);
       scale_e[e] = s2;
       scatter(e, en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);

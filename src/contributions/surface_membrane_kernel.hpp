@@ -25,7 +25,9 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
       : part(ctx.part), refs(block_references<N>(ctx.model, ctx.part, ctx.block, ctx.first_element)) {}
 
   void internal(int e, const State& s, Vector& f, Matrix* K) const { membrane3d<N>(refs[e], s.x, *part.material, f, K); }
-  double length2(const Model& m, const int* en, const State&) const { return (m.X[en[1]] - m.X[en[0]]).squaredNorm(); }
+  double length2(const Model& m, const int* en, const State& s) const {
+    return std::max((m.X[en[1]] - m.X[en[0]]).squaredNorm(), s.x.colwise().squaredNorm().maxCoeff());
+  }
   void pressure(const State& s, double p, Vector& f, Matrix* K) const { surface_pressure<N>(s.x, p, f, K); }
   double subtract_pressure(const State& s, double p, Vector& f, Matrix* K) const {
     return subtract_surface_pressure<N>(s.x, p, f, K);
