@@ -252,3 +252,22 @@ TEST(InverseStep, ReferenceMeshFileIsADeckThatInflatesBackToTheImagedGeometry) {
               "nodes\n", err);
   EXPECT_LT(err, 1e-8);
 }
+
+TEST(InverseStep, RatAortaInverseExampleGivesTheLoadFreeTube) {
+  // examples/rat-aorta-inverse.yaml: the tube imaged at 120 mmHg and λz = 1.6 (radius to 12 digits).
+  const std::string file = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inverse.yaml";
+  const Model m = read_deck_text(read_text(file), file);
+  Capture cap;
+  Analysis a(m);
+  a.run(cap);
+  const Row& last = cap.rows.back();
+  const double R = last.values[Capture::column(m, "reference_radius_mm")];
+  const double Z = last.values[Capture::column(m, "reference_end_z_mm")];
+  const double lz = last.values[Capture::column(m, "lambda_z")];
+  std::printf("examples/rat-aorta-inverse.yaml: R = %.12f mm, reference length %.12f mm, λz = %.10f, %d cut-backs\n", R,
+              Z, lz, cap.cutbacks);
+  EXPECT_NEAR(R, 0.763, 1e-10);
+  EXPECT_NEAR(Z, 1.0, 1e-10);
+  EXPECT_NEAR(lz, 1.6, 1e-10);
+  EXPECT_EQ(cap.cutbacks, 0);
+}
