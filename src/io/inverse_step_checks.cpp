@@ -38,10 +38,14 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
 
 void check_after_inverse_step(const DeckNode& node, const Model& m) {
   if (!m.steps.empty() && m.steps.front().inverse)
-    node.fail(fmt::format("a step after the inverse step '{}' is not supported yet: the zero-pressure geometry it "
-                          "computes is written as a mesh (reference_<step>.msh in the output folder) that a deck of "
-                          "its own can start from",
-                          m.steps.front().name));
+    node.fail(fmt::format(
+        "a step after the inverse step '{}' is not supported yet: the zero-pressure geometry it computes is written "
+        "to the output folder, {}",
+        m.steps.front().name,
+        m.geometry == Geometry::axisymmetric
+            ? "reference_" + m.steps.front().name + ".csv (node, R, Z: a meridian to fit a deck of its own's `line` or `arc` to)"
+            : "reference_" + m.steps.front().name + ".msh (a Gmsh mesh that a deck of its own can start from: "
+                                                    "`mesh: {type: gmsh, file: ..., surface: <part>}`)"));
 }
 
 }  // namespace tunica
