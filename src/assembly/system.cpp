@@ -224,7 +224,10 @@ void System::assemble(const Eigen::VectorXd& u, const LoadState& loads, Eigen::V
   // Inactive parts (not entered yet) are skipped with their loads; their nodes are held.
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
     if (!model_.part_active(static_cast<int>(p), loads.step)) continue;
-    for (const auto& block : blocks_[p]) block->assemble(u, pressure[p], R, K, scale2);
+    if (inverse(loads))
+      for (const auto& block : blocks_[p]) block->assemble_inverse(u, pressure[p], R, K, scale2);
+    else
+      for (const auto& block : blocks_[p]) block->assemble(u, pressure[p], R, K, scale2);
   }
   assemble_held(loads.step, u, R, K);
   // Contact, serially in pair and node order (deterministic), after the elements; pairs with a
@@ -255,7 +258,10 @@ Eigen::VectorXd System::add_start_stiffness(const LoadState& loads, const Eigen:
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
     if (pressure[p] == 0.0 || !model_.part_active(static_cast<int>(p), loads.step)) continue;
     const double cap = extent_[p] > 0 ? 1.0 / extent_[p] : 0.0;  // |H| floor: T₀ ≤ |p| L
-    for (const auto& block : blocks_[p]) block->start_stiffness(std::abs(pressure[p]), cap, d, Kd, K);
+    // The inverse problem's ∂R/∂X is about −∂R/∂x near the stress-free state (R depends on x − X to
+    // first order): its start stiffness is −K₀, (13.8).
+    const double T = inverse(loads) ? -std::abs(pressure[p]) : std::abs(pressure[p]);
+    for (const auto& block : blocks_[p]) block->start_stiffness(T, cap, d, Kd, K);
   }
   return Kd;
 }
@@ -296,9 +302,14 @@ double System::part_energy(const Eigen::VectorXd& u, int p) const {
   return energy;
 }
 
-std::vector<MembranePoint> System::points(const Eigen::VectorXd& u, int p) const {
+std::vector<MembranePoint> System::points(const Eigen::VectorXd& u, int p, int step) const {
   std::vector<MembranePoint> out;
-  for (const auto& block : blocks_[p]) block->membrane_points(u, out);
+  LoadState at;
+  at.step = step;
+  if (inverse(at))
+    for (const auto& block : blocks_[p]) block->inverse_points(u, out);
+  else
+    for (const auto& block : blocks_[p]) block->membrane_points(u, out);
   return out;
 }
 

@@ -102,6 +102,12 @@ public:
   /// V = π ∫ r² dz along the meridian, (6.7), on a shell's Hermite curve (11.5)) and, if
   /// `grad` is given, ∂V/∂u (all DOFs).
   double volume(const Eigen::VectorXd& u, int l, Eigen::VectorXd* grad = nullptr) const;
+  /// True if `loads` belong to an inverse step (Step::inverse; theory manual §13): assemble() then
+  /// gives the inverse problem's R and K (BlockContribution::assemble_inverse; K is not symmetric),
+  /// u moving the reference nodes X = x̂ + u, the deck's positions x̂ the imaged ones.
+  bool inverse(const LoadState& loads) const {
+    return loads.step >= 0 && loads.step < static_cast<int>(model_.steps.size()) && model_.steps[loads.step].inverse;
+  }
   /// A zero matrix with the tangent's pattern (both triangles).
   const SparseMatrix& pattern() const { return layout_->pattern(); }
   /// Where the tangent's entries are stored (linalg/tangent_layout.hpp).
@@ -109,8 +115,9 @@ public:
   /// A zero tangent in layout()'s split storage, with the upper triangle if `upper`.
   TangentMatrix tangent(bool upper) const { return TangentMatrix(layout_, upper); }
   /// Gauss-point states of every element of a membrane part, block by block, element by element
-  /// (empty for a solid part).
-  std::vector<MembranePoint> points(const Eigen::VectorXd& u, int part) const;
+  /// (empty for a solid part), at u in step `step` (0-based): in an inverse step the reference is
+  /// X = x̂ + u and the current state the imaged x̂ (the stress in the imaged state).
+  std::vector<MembranePoint> points(const Eigen::VectorXd& u, int part, int step = 0) const;
   /// Gauss-point states of a solid part, 4 per element, element by element (empty for a membrane part).
   std::vector<SolidPoint> solid_points(const Eigen::VectorXd& u, int part) const;
   /// Stored strain energy of a part at u, Σ_e Π_e (membranes: Σ_g Ŵ w_g; solids: the element

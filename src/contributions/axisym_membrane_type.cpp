@@ -1,12 +1,14 @@
 // The 2-node axisymmetric membrane (elements/axisym_membrane.hpp, theory manual §3) with the
 // follower pressure on its meridian segment (loads/axisym_pressure.hpp, §6) and the enclosed
-// volume V_e = π ∫ r² dz = π Δz (r₁² + r₁r₂ + r₂²)/3 of a straight segment ((6.7)).
+// volume V_e = π ∫ r² dz = π Δz (r₁² + r₁r₂ + r₂²)/3 of a straight segment ((6.7)); its inverse
+// element (elements/axisym_membrane_inverse.hpp, §13) moves the reference nodes, X = x̂ + u.
 #include <algorithm>
 #include <numbers>
 
 #include "contributions/element_loop.hpp"
 #include "contributions/kinematics.hpp"
 #include "elements/axisym_membrane.hpp"
+#include "elements/axisym_membrane_inverse.hpp"
 #include "loads/axisym_pressure.hpp"
 
 namespace tunica {
@@ -38,6 +40,15 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
     }
     return std::numbers::pi * dz * q;
   }
+  void inverse(int, const State& s, const Vector& ue, Vector& f, Matrix* K) const {
+    axisym_membrane_inverse(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f, K);
+  }
+  void inverse_points(int, const State& s, const Vector& ue, std::vector<MembranePoint>& out) const {
+    Vector f;
+    std::array<MembranePoint, 2> pts;
+    axisym_membrane(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f, nullptr, &pts);
+    out.insert(out.end(), pts.begin(), pts.end());
+  }
   void points(int, const State& s, std::vector<MembranePoint>& out) const {
     Vector f;
     std::array<MembranePoint, 2> pts;
@@ -53,6 +64,7 @@ const bool registered = [] {
                          .unknowns_per_node = 2,
                          .solid = false,
                          .pressure = true,
+                         .inverse = true,
                          .vtk_cell = 3,           // VTK_LINE
                          .vtk_revolved_cell = 9,  // VTK_QUAD
                          .points_per_element = [](const Part&) { return 2; },

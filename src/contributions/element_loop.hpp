@@ -19,6 +19,11 @@
 //     void start(int e, double T0, Matrix& K) const;                                 // if kStartStiffness
 //     void points(int e, const State&, std::vector<MembranePoint or SolidPoint>&) const;
 //     double energy(int e, const State&) const;                                      // if kSolid
+//     // optional, the inverse element (theory manual §13): s the imaged state (x = the model's
+//     // positions), ue the element's unknowns (its reference nodes X = x + ue), f = f_int(X, x),
+//     // K = ∂f_int/∂X; and its Gauss points (reference X, current x)
+//     void inverse(int e, const State& s, const Vector& ue, Vector& f, Matrix* K) const;
+//     void inverse_points(int e, const State& s, const Vector& ue, std::vector<MembranePoint>&) const;
 //   };
 //
 // Parallel assembly: each colour is one OpenMP loop; elements of a colour touch disjoint
@@ -72,6 +77,10 @@ public:
   using Vector = Eigen::Matrix<double, kDofs, 1>;
   using Matrix = Eigen::Matrix<double, kDofs, kDofs>;
   using State = typename Kernel::State;
+  /// The kernel has the inverse element (theory manual §13).
+  static constexpr bool kInverse = requires(const Kernel& k, const State& s, const Vector& v, Vector& f, Matrix* M) {
+    k.inverse(0, s, v, f, M);
+  };
 
   explicit KernelBlock(BlockContext ctx)
       : model_(ctx.model), block_(ctx.block), kernel_(ctx), layout_(std::move(ctx.layout)),
@@ -88,6 +97,7 @@ public:
     agree("unknowns per node", Kernel::kUnknowns, type.unknowns_per_node, "the registration");
     agree("solid", Kernel::kSolid, type.solid, "the registration");
     agree("pressure", Kernel::kPressure, type.pressure, "the registration");
+    agree("inverse", kInverse, type.inverse, "the registration");
     agree("scatter codes per element", kDofs * kDofs,
           block_.size() ? static_cast<long>(layout_.scatter.size()) / block_.size() : kDofs * kDofs, "the layout");
     if (Kernel::kStartStiffness)
@@ -133,6 +143,50 @@ public:
       scatter(e, en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
     });
     for (double s2 : scale_e) scale2 += s2;
+  }
+
+  void assemble_inverse(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
+                        double& scale2) const override {
+    if constexpr (kInverse) {
+      const Eigen::VectorXd zero = Eigen::VectorXd::Zero(u.size());
+      std::vector<double> scale_e(block_.size());
+      for_each_coloured(layout_, [&](int e) {
+        Vector f, ue;
+        Matrix Ke;
+        State s;
+        const int* en = block_.element(e);
+        Kernel::gather(model_, en, zero, s);  // the imaged state: x = the model's positions
+        for (int a = 0; a < kDofs; ++a) ue(a) = u(Kernel::dof(model_, en, a));
+        kernel_.inverse(e, s, ue, f, K ? &Ke : nullptr);
+        double s2 = f.squaredNorm();
+        if (pressure != 0.0) {  // on the imaged surface: f_p(x̂), no stiffness, (13.2)
+          Vector fp;
+          kernel_.pressure(s, pressure, fp, nullptr);
+          s2 += fp.squaredNorm();
+          f -= fp;
+        }
+        if (K) s2 += Ke.colwise().squaredNorm().sum() * kernel_.length2(model_, en, s);
+        scale_e[e] = s2;
+        scatter(e, en, f, K ? &Ke : nullptr, layout_.scatter.data() + kDofs * kDofs * e, R, K);
+      });
+      for (double s2 : scale_e) scale2 += s2;
+    } else {
+      BlockContribution::assemble_inverse(u, pressure, R, K, scale2);
+    }
+  }
+
+  void inverse_points(const Eigen::VectorXd& u, std::vector<MembranePoint>& out) const override {
+    if constexpr (kInverse) {
+      const Eigen::VectorXd zero = Eigen::VectorXd::Zero(u.size());
+      for (int e = 0; e < block_.size(); ++e) {
+        State s;
+        Vector ue;
+        const int* en = block_.element(e);
+        Kernel::gather(model_, en, zero, s);
+        for (int a = 0; a < kDofs; ++a) ue(a) = u(Kernel::dof(model_, en, a));
+        kernel_.inverse_points(e, s, ue, out);
+      }
+    }
   }
 
   void pressure_load(const Eigen::VectorXd& u, double sign, Eigen::VectorXd& g) const override {

@@ -17,6 +17,13 @@ std::map<ElementKind, ElementType>& registry() {
 }  // namespace
 
 void BlockContribution::start_stiffness(double, double, const Eigen::VectorXd&, Eigen::VectorXd&, TangentMatrix&) const {}
+void BlockContribution::assemble_inverse(const Eigen::VectorXd&, double, Eigen::VectorXd&, TangentMatrix*,
+                                         double&) const {
+  throw std::logic_error("this element type has no inverse element (ElementType::inverse)");
+}
+
+void BlockContribution::inverse_points(const Eigen::VectorXd&, std::vector<MembranePoint>&) const {}
+
 void BlockContribution::membrane_points(const Eigen::VectorXd&, std::vector<MembranePoint>&) const {}
 void BlockContribution::solid_points(const Eigen::VectorXd&, std::vector<SolidPoint>&) const {}
 

@@ -60,6 +60,16 @@ public:
   /// element order whatever the number of threads, into scale2.
   virtual void assemble(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
                         double& scale2) const = 0;
+  /// The inverse problem's R and K (theory manual §13): the unknowns u move the reference nodes,
+  /// X = x̂ + u, the imaged nodes x̂ being the model's (deck) positions; R += f_int(X, x̂) − f_p(x̂),
+  /// K += ∂f_int/∂X (not symmetric; no load stiffness: the follower pressure acts on the known
+  /// imaged surface); scale2 as assemble(). std::logic_error for a kind without an inverse element
+  /// (ElementType::inverse false; the deck reader refuses it first).
+  virtual void assemble_inverse(const Eigen::VectorXd& u, double pressure, Eigen::VectorXd& R, TangentMatrix* K,
+                                double& scale2) const;
+  /// The Gauss-point states of the inverse problem at u: reference X = x̂ + u, current x̂ (the stress
+  /// in the imaged state); none by default.
+  virtual void inverse_points(const Eigen::VectorXd& u, std::vector<MembranePoint>& out) const;
   /// g += ∂f_ext/∂p, the external force per unit pressure of sign `sign` (all DOFs).
   virtual void pressure_load(const Eigen::VectorXd& u, double sign, Eigen::VectorXd& g) const = 0;
   /// V += V_e element by element, the enclosed volume of the elements' surface (theory manual
@@ -68,7 +78,8 @@ public:
   /// diag += the diagonal of the tangent at the reference state u = 0 (all DOFs).
   virtual void reference_diagonal(Eigen::VectorXd& diag) const = 0;
   /// The stress-free start's normal-tension stiffness (theory manual (7.6)–(7.8)) for pressure |p|
-  /// and curvature floor `cap`: K += K₀ and Kd += K₀ d (d all DOFs, or empty). None by default.
+  /// and curvature floor `cap`: K += K₀ and Kd += K₀ d (d all DOFs, or empty); −|p| gives −K₀, the
+  /// inverse problem's (13.8). None by default.
   virtual void start_stiffness(double abs_pressure, double cap, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
                                TangentMatrix& K) const;
   /// Appends the Gauss-point states of every element (membranes and shells; none for solids).
@@ -88,6 +99,7 @@ struct ElementType {
   int unknowns_per_node = 0;   ///< element unknowns per node (node-major element DOFs)
   bool solid = false;          ///< Gauss-point states are SolidPoint (else MembranePoint)
   bool pressure = false;       ///< carries follower pressure and encloses a volume (pressure loads may act on it)
+  bool inverse = false;        ///< has the inverse element (BlockContribution::assemble_inverse; theory manual §13)
   std::uint8_t vtk_cell = 0;   ///< VTK cell type (vtkCellType.h) as its nodes lie
   std::uint8_t vtk_revolved_cell = 0;  ///< axisymmetric: the cell it sweeps when revolved; 0 for 3-D kinds
   /// Gauss points per element of a part (System::points order).

@@ -4,10 +4,12 @@
 // surface (loads/surface_pressure.hpp, §6) and the stress-free start's normal-tension stiffness
 // (elements/start_tension.hpp, (7.6)–(7.8)). A surface element type is this kernel and its
 // registration (surface_membrane_types.cpp; a new shape: its own file, docs/architecture.md).
+// Its inverse element (elements/membrane3d_inverse.hpp, §13) moves the reference nodes, X = x̂ + u.
 #include "contributions/element_loop.hpp"
 #include "contributions/kinematics.hpp"
 #include "contributions/surface_references.hpp"
 #include "elements/membrane3d.hpp"
+#include "elements/membrane3d_inverse.hpp"
 #include "elements/start_tension.hpp"
 #include "loads/surface_pressure.hpp"
 
@@ -20,9 +22,12 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
   using Vector = ElementVector<N>;
   using Matrix = ElementMatrix<N>;
   const Part& part;
+  const Model& model;
+  const ElementBlock& block;
   std::vector<MembraneReference<N>> refs;
   explicit SurfaceMembraneKernel(const BlockContext& ctx)
-      : part(ctx.part), refs(block_references<N>(ctx.model, ctx.part, ctx.block, ctx.first_element)) {}
+      : part(ctx.part), model(ctx.model), block(ctx.block),
+        refs(block_references<N>(ctx.model, ctx.part, ctx.block, ctx.first_element)) {}
 
   void internal(int e, const State& s, Vector& f, Matrix* K) const { membrane3d<N>(refs[e], s.x, *part.material, f, K); }
   double length2(const Model& m, const int* en, const State& s) const {
@@ -34,6 +39,18 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
   }
   double volume(const State& s, const VolumeMeasure& how, Vector* grad) const { return enclosed_volume<N>(s.x, how, grad); }
   void start(int e, double T0, Matrix& K) const { normal_tension_stiffness<N>(refs[e], T0, K); }
+  void inverse(int e, const State& s, const Vector& ue, Vector& f, Matrix* K) const {
+    const SurfaceNodes<N> X = s.x + Eigen::Map<const SurfaceNodes<N>>(ue.data());
+    membrane3d_inverse<N>(X, s.x, part.thickness, frame_direction(model, part.frame, block, e), *part.material, f, K);
+  }
+  void inverse_points(int e, const State& s, const Vector& ue, std::vector<MembranePoint>& out) const {
+    const SurfaceNodes<N> X = s.x + Eigen::Map<const SurfaceNodes<N>>(ue.data());
+    const FrameDirection d = frame_direction(model, part.frame, block, e);
+    Vector f;
+    std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints> pts;
+    membrane3d<N>(membrane_reference<N>(X, part.thickness, d.rule<N>(X)), s.x, *part.material, f, nullptr, &pts);
+    out.insert(out.end(), pts.begin(), pts.end());
+  }
   void points(int e, const State& s, std::vector<MembranePoint>& out) const {
     Vector f;
     std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints> pts;
@@ -51,6 +68,7 @@ ElementType surface_membrane_type(ElementKind kind, std::string name, std::uint8
           .unknowns_per_node = 3,
           .solid = false,
           .pressure = true,
+          .inverse = true,
           .vtk_cell = vtk_cell,
           .vtk_revolved_cell = 0,
           .points_per_element = [](const Part&) { return SurfaceShapeTraits<N>::kPoints; },

@@ -27,4 +27,20 @@ DirectionRule direction_rule(const Model& model, const FrameRule& frame, const E
   return [v](const Eigen::Vector3d&, const Eigen::Vector3d&) -> Eigen::Vector3d { return v; };
 }
 
+FrameDirection frame_direction(const Model&, const FrameRule& frame, const ElementBlock& block, int e) {
+  FrameDirection d;
+  switch (frame.type) {
+    case FrameRule::Type::cylindrical:
+      d.kind = FrameDirection::Kind::about_axis;
+      d.axis = frame.axis;
+      d.point = frame.point;
+      return d;
+    case FrameRule::Type::vector: d.vector = frame.vector; return d;
+    case FrameRule::Type::mesh: d.vector = block.direction.at(e); return d;
+    case FrameRule::Type::edge: break;
+  }
+  d.kind = FrameDirection::Kind::first_edge;
+  return d;
+}
+
 }  // namespace tunica

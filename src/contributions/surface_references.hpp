@@ -7,12 +7,17 @@
 #include <vector>
 
 #include "elements/membrane3d.hpp"
+#include "elements/membrane3d_inverse.hpp"
 #include "model/model.hpp"
 
 namespace tunica {
 
 /// The direction rule of a part's frame for element e of a block (frame rules: model.hpp).
 DirectionRule direction_rule(const Model& model, const FrameRule& frame, const ElementBlock& block, int e);
+
+/// The same rule as a function of the element's reference nodes, for the inverse element
+/// (elements/membrane3d_inverse.hpp): the edge rule follows the element's first edge as X moves.
+FrameDirection frame_direction(const Model& model, const FrameRule& frame, const ElementBlock& block, int e);
 
 /// Reference data of every element of a 3-D block of N-node elements. Throws
 /// BadElement whose message names the element (as in the mesh file, else 0-based within

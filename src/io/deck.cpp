@@ -23,6 +23,7 @@
 #include "io/deck_shell_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
+#include "io/inverse_step_checks.hpp"
 #include "io/meridian_checks.hpp"
 #include "io/unitless_values.hpp"
 #include "io/yaml_syntax.hpp"
@@ -118,6 +119,16 @@ const ComponentSpec& step_spec() {
       "steps", "",
       "One load step: the targets it ramps to, in equal increments.",
       {with_default(text("name", "name shown in progress and output"), "step"),
+       with_default(one_of(text("type",
+                                "`forward`: the deck's geometry is the stress-free reference and the step solves "
+                                "for the deformed positions. `inverse` (first step only): the deck's geometry is the "
+                                "imaged, loaded configuration, held by the loads the step ramps to (e.g. the imaged "
+                                "blood pressure), and the step solves for the zero-pressure reference geometry that "
+                                "the loads deform into it (theory manual §13); positions, displacements and frames "
+                                "of the step are of that reference geometry, stresses and stretches of the imaged "
+                                "state; a part's `thickness` is the reference thickness"),
+                           {"forward", "inverse"}),
+                    "forward"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
        structured("set", "map", "boundary or load names → their values at the end of the step"),
        structured("volume_control", "map",
@@ -525,6 +536,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     const Params p = read_params(node, step_spec(), m.units);
     Step s;
     s.name = p.text("name");
+    s.inverse = p.text("type") == "inverse";
     s.increments = static_cast<int>(p.integer("increments"));
     s.solver = read_solver(node["solver"], m.units, solver);
     if (node.has("set")) {
@@ -589,6 +601,8 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       s.volume_control.where = vc["volume"].where();
       if (!(s.volume_control.target > 0)) vc["volume"].fail("the target volume must be positive");
     }
+    if (s.inverse) check_inverse_step(node, m, s);
+    else check_after_inverse_step(node, m);
     m.steps.push_back(std::move(s));
   }
 }

@@ -210,6 +210,10 @@ struct VolumeControl {
 /// Newton and increment-control settings.
 struct Step {
   std::string name;
+  /// An inverse step (theory manual §13): the deck's geometry is the imaged, loaded configuration
+  /// and the unknowns move the reference nodes, X = x̂ + u, so that the loads at their values
+  /// are carried in x̂ (the zero-pressure geometry). Else a forward step.
+  bool inverse = false;
   int increments = 1;
   std::map<std::string, double> targets;  ///< boundary or load name → value at the end of the step
   VolumeControl volume_control;           ///< load < 0: none

@@ -57,7 +57,7 @@ std::vector<double> history_values(const Analysis& a, const IncrementInfo& info)
           if (solid_points[r.part].empty()) solid_points[r.part] = a.system().solid_points(a.displacement(), r.part);
           for (const auto& p : solid_points[r.part]) vals.push_back(q->solid(p));
         } else {
-          if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part);
+          if (points[r.part].empty()) points[r.part] = a.system().points(a.displacement(), r.part, a.loads().step);
           if (q->membrane_whole) {
             v = q->membrane_whole(points[r.part]);
             break;

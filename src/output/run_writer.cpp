@@ -15,6 +15,7 @@
 #include "output/atomic_file.hpp"
 #include "output/history.hpp"
 #include "output/output_folder.hpp"
+#include "output/reference_mesh.hpp"
 #include "output/stop_signal.hpp"
 
 namespace tunica {
@@ -183,6 +184,10 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   if (last_framed_) write_frame(analysis, info);
   note_compression(analysis, info);
   note_penetration(analysis, info);
+  // The end of an inverse step: its zero-pressure geometry, for a deck of its own (reference_mesh.hpp).
+  if (info.step > 0 && info.fraction >= 1.0 - 1e-12 && model_.steps[info.step - 1].inverse)
+    write_file_atomically(dir_ + "/" + reference_mesh_name(model_, info.step - 1),
+                          reference_mesh_text(model_, analysis.displacement()));
   last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}, model_.fingerprint};
   for (AppendFile* f : {&history_, &newton_, &frames_csv_, &meridian_pvd_, &surface_pvd_})
     if (f->is_open()) last_->files.push_back(f->record());
@@ -209,7 +214,7 @@ void RunWriter::note_compression(const Analysis& analysis, const IncrementInfo& 
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
     const Part& part = model_.parts[p];
     if (compression_noted_[p] || part.is_solid() || part.is_shell()) continue;
-    const double f = compressed_fraction(analysis.system().points(analysis.displacement(), static_cast<int>(p)));
+    const double f = compressed_fraction(analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step));
     if (f <= 0.01) continue;
     compression_noted_[p] = 1;
     std::fprintf(stderr,

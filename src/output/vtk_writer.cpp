@@ -64,7 +64,7 @@ std::vector<CellField> cell_fields(const Analysis& a) {
       }
       continue;
     }
-    const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
+    const auto pts = a.system().points(a.displacement(), static_cast<int>(p), a.loads().step);
     const int q = points_per_element(m.parts[p], m.parts[p].blocks.front().kind);
     for (std::size_t e = 0; q * (e + 1) <= pts.size(); ++e) {
       MembranePoint g;  // the element's Gauss-point average
@@ -236,7 +236,7 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
                               {"direction_1", {}, 3},    {"direction_2", {}, 3},    {"cauchy_stress" + s, {}, 9},
                               {"compressed", {}}};
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
-    const auto pts = a.system().points(a.displacement(), static_cast<int>(p));
+    const auto pts = a.system().points(a.displacement(), static_cast<int>(p), a.loads().step);
     const std::vector<char> compressed = compressed_points(pts);
     std::size_t k = 0;
     for (const auto& block : m.parts[p].blocks) {

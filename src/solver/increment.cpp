@@ -16,7 +16,9 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
   // The tangent's upper triangle is assembled only for a consumer that reads it: the solver (all
   // but CHOLMOD: `auto`'s symmetry test, the LU solvers), the symmetrization and the bordered
   // system. For CHOLMOD alone the lower triangle is the whole matrix it factorizes.
-  const bool upper = solver.reads_upper() || settings.symmetrize_pressure_stiffness || constraint;
+  // The inverse problem's tangent is not symmetric (theory manual §13): both triangles, never symmetrized.
+  const bool inverse = system.inverse(loads);
+  const bool upper = solver.reads_upper() || settings.symmetrize_pressure_stiffness || constraint || inverse;
   MechanicalProblem equilibrium(system, loads, u, upper);
   // The increment starts at the stress-free reference state.
   const bool stress_free = converged && converged->size() > 0 && (converged->array() == 0.0).all();
@@ -32,7 +34,7 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
     stiffness = hook.get();
     equilibrium.add_hook(std::move(hook));
   }
-  if (settings.symmetrize_pressure_stiffness) equilibrium.add_hook(std::make_unique<Symmetrization>());
+  if (settings.symmetrize_pressure_stiffness && !inverse) equilibrium.add_hook(std::make_unique<Symmetrization>());
   std::optional<TangentPredictor> predictor;
   if (converged && settings.tangent_predictor) predictor.emplace(equilibrium, *converged, stiffness);
   return newton(equilibrium, solver, settings, on_iteration, predictor ? &*predictor : nullptr);

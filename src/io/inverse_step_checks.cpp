@@ -1,0 +1,51 @@
+#include "io/inverse_step_checks.hpp"
+
+#include <fmt/format.h>
+
+#include "contributions/element_type.hpp"
+
+namespace tunica {
+
+void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) {
+  const DeckNode type = node["type"];
+  if (!m.steps.empty())
+    type.fail(fmt::format("an inverse step must be the first step: the deck's geometry is the imaged (loaded) "
+                          "configuration it starts from, and step '{}' comes before it",
+                          m.steps.front().name));
+  if (step.volume_control.load >= 0)
+    node["volume_control"].fail("an inverse step takes its loads at their imaged values in `set`, not volume control");
+  for (const Part& part : m.parts) {
+    for (const ElementBlock& b : part.blocks)
+      if (!element_type(b.kind).inverse)
+        type.fail(fmt::format("part '{}' is made of {}s, which have no inverse element: an inverse step takes "
+                              "membrane parts only (3-D triangles and quadrilaterals, 6-node triangles, "
+                              "axisymmetric membranes)",
+                              part.name, element_type(b.kind).name));
+    if (part.enter_step > 0)
+      type.fail(fmt::format("part '{}' enters in a later step: an inverse step solves for the reference of every part "
+                            "at once (leave out its `enter_step`)",
+                            part.name));
+  }
+  if (!m.contacts.empty())
+    type.fail(fmt::format("contact pair '{}': an inverse step takes no contact (the imaged configuration's contact "
+                          "forces are unknown)",
+                          m.contacts.front().name));
+  if (step.solver.linear_solver == "cholmod")
+    (node.has("solver") && node["solver"].has("linear_solver") ? node["solver"]["linear_solver"] : type)
+        .fail("the tangent of an inverse step is not symmetric, and cholmod takes symmetric tangents only: use "
+              "`linear_solver: auto` (UMFPACK for it) or umfpack");
+}
+
+void check_after_inverse_step(const DeckNode& node, const Model& m) {
+  if (!m.steps.empty() && m.steps.front().inverse)
+    node.fail(fmt::format(
+        "a step after the inverse step '{}' is not supported yet: the zero-pressure geometry it computes is written "
+        "to the output folder, {}",
+        m.steps.front().name,
+        m.geometry == Geometry::axisymmetric
+            ? "reference_" + m.steps.front().name + ".csv (node, R, Z: a meridian to fit a deck of its own's `line` or `arc` to)"
+            : "reference_" + m.steps.front().name + ".msh (a Gmsh mesh that a deck of its own can start from: "
+                                                    "`mesh: {type: gmsh, file: ..., surface: <part>}`)"));
+}
+
+}  // namespace tunica
