@@ -167,6 +167,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   return hints;
 }
 
+std::string eversion_hint(const Model& model, int load) {
+  const std::string& name = model.loads[load].name;
+  return fmt::format(
+      " Hint: Newton found equilibrium only with the surface of load '{}' turned inside out (its enclosed volume of "
+      "the other sign), which no real membrane reaches: the increment starts too far from the state it should end "
+      "at, most likely at or near a maximum of the pressure (a limit point), beyond which the pressure's next "
+      "equilibrium lies far along the curve. Take smaller increments (a larger `increments` in the step, or "
+      "`max_cutbacks` in `solver`), or control the enclosed volume instead, which keeps its sign and follows the "
+      "curve through a maximum: a step with `volume_control: {{load: {}, volume: <enclosed volume>}}` (user guide "
+      "§3.1, volume control).",
+      name, name);
+}
+
 std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step) {
   std::string hints;
   const Model& m = system.model();

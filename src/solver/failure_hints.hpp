@@ -36,6 +36,12 @@ namespace tunica {
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
                           const LoadState& attempted);
 
+/// The hint of an increment whose every attempt, down to the smallest allowed, converged to a
+/// state that load `load`'s surface reaches only by passing through itself (the enclosed volume
+/// changed sign, solver/analysis.hpp): smaller increments, or volume control, which keeps the
+/// volume's sign.
+std::string eversion_hint(const Model& model, int load);
+
 /// The slave nodes of a deformable contact pair that are active at u, next to each other on the
 /// slave chain, lie this many master segments apart on average (or more): the slave is the
 /// coarser mesh in contact.
