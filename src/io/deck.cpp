@@ -28,6 +28,7 @@
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
+#include "model/symmetry_plane_check.hpp"
 #include "model/node_label.hpp"
 #include "model/rigid_motion_check.hpp"
 #include "model/volume_axis_check.hpp"
@@ -840,6 +841,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   // A frame that does not fit its surface: at the part's `frame`.
   for (const FrameMisfit& f : frame_axis_warnings(m))
     m.warnings.push_back(format_location(deck["parts"][m.parts[f.part].name]["frame"].where(), f.message));
+  // A symmetry boundary that holds another DOF than the plane its nodes lie on: at the boundary.
+  for (const SymmetryMisfit& s : symmetry_name_warnings(m))
+    m.warnings.push_back(format_location(m.boundaries[s.boundary].where, s.message));
   m.fingerprint = deck_fingerprint(deck, m, &m.fingerprint_places);
   return m;
 }
