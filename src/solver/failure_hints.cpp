@@ -76,8 +76,9 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
                   "raise `max_iterations` in `solver` (now {}).",
                   last.last_relative_residual, step.solver.max_iterations);
-  // One hint for one failure: a pressure at the largest the structure carries has no state to
-  // converge to however many iterations are allowed, so that hint replaces raising the limit;
+  // One hint for one failure: a pressure at a maximum of p(V) (or an asymptote) has no state near
+  // the last one to converge to however many iterations are allowed, so that hint replaces raising
+  // the limit;
   // a curve that flattened but still rises leaves the slow convergence as the evidence.
   std::string limit, rising;
   // A pressure the step raises, under pressure control, whose p–V curve flattens: theory manual §7.1.
