@@ -23,7 +23,7 @@ Analysis::Analysis(const Model& model) : model_(model), system_(model) {
 
 std::string Analysis::eversion(const Eigen::VectorXd& u, int& load) const {
   for (int l = 0; l < static_cast<int>(model_.loads.size()); ++l) {
-    if (!orientation_volume_[l]) continue;
+    if (!orientation_volume_[l] || l >= static_cast<int>(state_.loads.volume.size())) continue;
     const double before = state_.loads.volume[l], now = system_.volume(u, l);
     if (!(before * now < 0)) continue;
     load = l;
