@@ -120,12 +120,24 @@ int mesh(const std::string& geo, const std::string& msh, const tunica::GeoMeshFo
   if (fs::exists(msh, ec) && !fs::is_regular_file(msh, ec))
     fail(msh, "the output exists and is not a regular file (a device, pipe, socket or directory)");
   if (fs::exists(msh, ec) && fs::equivalent(geo, msh, ec)) fail(msh, "the output is the script itself");
-  const std::string bytes = tunica::mesh_geo_script(geo, format);
+  // On failure the output is not touched: an earlier mesh there stays as it was, and a deck that
+  // names it reads that one, which the message says.
+  const std::string untouched =
+      fs::exists(msh, ec) ? fmt::format("; nothing was written: the earlier {} is left unchanged (a deck that names it "
+                                        "still reads that earlier mesh)",
+                                        msh)
+                          : fmt::format("; nothing was written ({} was not created)", msh);
+  std::string bytes;
+  try {
+    bytes = tunica::mesh_geo_script(geo, format);
+  } catch (const tunica::InputError& e) {
+    throw tunica::InputError(e.where(), e.reason() + untouched);
+  }
   // What it wrote must be a mesh that decks can use: refused here, not when a deck reads it.
   try {
     tunica::read_script_mesh(geo, bytes);
   } catch (const tunica::InputError& e) {
-    throw tunica::InputError(e.where(), e.reason() + "; nothing was written");
+    throw tunica::InputError(e.where(), e.reason() + untouched);
   }
   tunica::write_file_atomically(msh, bytes);
   std::printf("%s: meshed into %s\n", geo.c_str(), msh.c_str());

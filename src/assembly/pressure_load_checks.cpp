@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "model/open_edges.hpp"
+#include "model/volume_axis_check.hpp"
 
 namespace tunica {
 
@@ -101,6 +102,37 @@ double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, i
     }
   }
   return V;
+}
+
+bool volume_sign_is_orientation(const Model& m, int l) {
+  const PressureLoad& load = m.loads[l];
+  const Part& part = m.parts[load.part];
+  if (part.is_solid()) return false;
+  // Translational DOFs held per node (bit c for DOF c).
+  const int translational = m.dofs_per_node();
+  std::vector<int> held(m.num_nodes(), 0);
+  for (const Boundary& b : m.boundaries)
+    for (int n : m.node_sets[b.node_set].nodes)
+      for (int c : b.dofs)
+        if (c < translational) held[n] |= 1 << c;
+  const auto clamped = [&](int n) { return held[n] == (1 << translational) - 1; };
+  if (m.geometry == Geometry::axisymmetric) {
+    if (part.nodes.empty()) return false;
+    double size = 0;
+    for (int n : part.nodes) size = std::max(size, m.X[n].head<2>().norm());
+    for (int end : {part.nodes.front(), part.nodes.back()})
+      if (m.X[end](0) > 1e-9 * size && clamped(end)) return false;
+    return true;
+  }
+  const std::vector<std::pair<int, int>> open = open_edges(m, load.part);
+  if (open.empty()) return true;
+  if (load.volume.about_axis) return volume_axis_misfit(m, load.part, load.volume).empty();
+  int missing = 0;
+  missing_cap_volume(m, load.part, load.volume.point, &missing);
+  if (missing > 0) return false;
+  for (const auto& [a, b] : open)
+    if (clamped(a) && clamped(b)) return false;
+  return true;
 }
 
 // The fix depends on whether the load already flips the side: then the normals point out and

@@ -44,4 +44,23 @@ std::vector<std::string> pressure_load_warnings(const System& system);
 /// left out. `open_count` receives the number of open edges counted.
 double missing_cap_volume(const Model& m, int part, const Eigen::Vector3d& p0, int* open_count = nullptr);
 
+/// Whether load `l`'s volume is an enclosed volume whose sign is the surface's orientation, so that
+/// a converged state where it has the other sign than at the state before is the surface passed
+/// through itself (or through its mirror image at a symmetry plane): turned inside out, a state
+/// the membrane's strains cannot tell from the right one (C = FᵀF and the normal do not change
+/// under x → −x about p₀), while its volume (theory manual (6.6)–(6.7)) has the other sign and the
+/// pressure pushes it inward, so that it has equilibria of its own (theory manual §7). True for
+///  - a closed 3-D surface;
+///  - a 3-D surface measured about a point whose open edges lie in planes through p₀
+///    (missing_cap_volume finds no cap missing), unless an open edge is clamped (every
+///    translational DOF of both its nodes held): a rim clamped in a plane through p₀ is not a
+///    mirror, and a membrane may snap through that plane (its volume changes sign legitimately);
+///  - a 3-D surface measured about an axis that fits its open ends (volume_axis_misfit is
+///    empty): the sign changes only where the wall passes through the axis;
+///  - an axisymmetric membrane or shell (V = π∫r² dz) whose meridian ends lie on the axis or are
+///    held in fewer than both of r and z (the same exception for a clamped end).
+/// False for an open sheet measured about a point (its volume about a point can change sign
+/// legitimately) and for solid parts.
+bool volume_sign_is_orientation(const Model& m, int l);
+
 }  // namespace tunica

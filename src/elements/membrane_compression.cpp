@@ -13,7 +13,16 @@ std::vector<char> compressed_points(const std::vector<MembranePoint>& points) {
   }
   std::vector<char> out(points.size(), 0);
   if (strain <= kUnstrained) return out;  // stresses of round-off size only
-  for (std::size_t i = 0; i < points.size(); ++i) out[i] = points[i].sigma_principal(1) < -1e-6 * scale;
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = points[i].sigma_principal(1) < -kCompressionShare * scale;
+  return out;
+}
+
+CompressionSize compression_size(const std::vector<MembranePoint>& points) {
+  CompressionSize out;
+  for (const auto& p : points) {
+    out.compression = std::min(out.compression, p.sigma_principal(1));
+    out.tension = std::max(out.tension, p.sigma_principal(0));
+  }
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
@@ -29,6 +30,7 @@
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
+#include "model/symmetry_plane_check.hpp"
 #include "model/node_label.hpp"
 #include "model/rigid_motion_check.hpp"
 #include "model/volume_axis_check.hpp"
@@ -375,10 +377,21 @@ void read_node_sets(const DeckNode& deck, Model& m) {
       else if (w == "all") set.nodes = pn;
       else nodes.fail(std::string("expected ") + (axisym ? "start, end, " : "") + "all or a list of node indices, got '" + w + "'");
     } else {
-      for (const auto& item : nodes.items()) {
+      // A node listed twice would be held, loaded or reported twice (a reaction summed twice): an
+      // error, since the repeat is most often a mistyped index of another node.
+      std::map<long, std::pair<int, SourceLocation>> listed;
+      const std::vector<DeckNode> items = nodes.items();
+      for (int k = 0; k < static_cast<int>(items.size()); ++k) {
+        const DeckNode& item = items[k];
         const long i = item.as_integer();
         if (i < 0 || i >= static_cast<long>(pn.size()))
           item.fail(fmt::format("node index {} is outside the part (0 … {})", i, pn.size() - 1));
+        if (const auto first = listed.find(i); first != listed.end())
+          item.fail(fmt::format("node set '{}' lists node {} twice: first as nodes[{}] (line {}, column {}), again "
+                                "here as nodes[{}]. List each node once; if another node was meant here, correct "
+                                "this index",
+                                name, i, first->second.first, first->second.second.line, first->second.second.column, k));
+        listed.emplace(i, std::make_pair(k, item.where()));
         set.nodes.push_back(pn[i]);
       }
     }
@@ -854,6 +867,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   // A frame that does not fit its surface: at the part's `frame`.
   for (const FrameMisfit& f : frame_axis_warnings(m))
     m.warnings.push_back(format_location(deck["parts"][m.parts[f.part].name]["frame"].where(), f.message));
+  // A symmetry boundary that holds another DOF than the plane its nodes lie on: at the boundary.
+  for (const SymmetryMisfit& s : symmetry_name_warnings(m))
+    m.warnings.push_back(format_location(m.boundaries[s.boundary].where, s.message));
   m.fingerprint = deck_fingerprint(deck, m, &m.fingerprint_places);
   return m;
 }

@@ -33,6 +33,7 @@ std::string out_of_range_message(const DeckNode& v, const ParamSpec& p, double x
     const bool fits = !(p.min && (p.min_exclusive ? rad <= *p.min : rad < *p.min)) && !(p.max && rad > *p.max);
     if (fits) s += fmt::format(": a plain number is radians; for degrees write `{} deg`", written);
   }
+  if (!p.range_fix.empty()) s += ": " + p.range_fix;
   return s;
 }
 

@@ -11,13 +11,10 @@
 
 namespace tunica {
 
-namespace {
-
-/// Common units of a dimension, for the nearest to a mistyped one.
 std::vector<std::string> common_units(Dimension dim) {
   switch (dim) {
     case Dimension::length: return {"m", "cm", "mm", "um", "nm", "in"};
-    case Dimension::force: return {"N", "mN", "kN", "uN", "dyn", "lbf"};
+    case Dimension::force: return {"N", "mN", "kN", "uN", "dyne", "lbf"};
     case Dimension::pressure: return {"Pa", "kPa", "MPa", "GPa", "mmHg", "bar", "psi", "atm", "N/mm^2", "N/m^2"};
     case Dimension::angle: return {"deg", "rad", "degree"};
     case Dimension::volume: return {"mm^3", "cm^3", "m^3", "ml", "ul"};
@@ -26,6 +23,8 @@ std::vector<std::string> common_units(Dimension dim) {
     default: return {};
   }
 }
+
+namespace {
 
 /// The number of `written` without its unit, trimmed ("3" of "3 MPa abs").
 std::string number_of(const std::string& written, const std::string& unit) {

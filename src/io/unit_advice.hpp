@@ -5,10 +5,14 @@
 // the whole unit unknown: the message names the word that is not a unit and the unit before it.
 // `grad` is the degree in some languages and the gradian in others: the message offers both.
 #include <string>
+#include <vector>
 
 #include "params/units.hpp"
 
 namespace tunica {
+
+/// Common units of a dimension, as UDUNITS-2 spells them, for the nearest to a mistyped one.
+std::vector<std::string> common_units(Dimension dim);
 
 /// The reason a value `written` ("3 MPa abs"), of unit `unit` ("MPa abs"), expected of dimension
 /// `dim`, was refused, with the fix: `reason` is what the unit conversion said ("unknown unit

@@ -59,7 +59,14 @@ const RegisterMaterial reg_hgo(MaterialType{
                                           "(write the unit, e.g. `39.98 deg`: a plain number is radians)"),
                                    0.0),
                           0.5 * std::numbers::pi * (1.0 + 1e-12))),  // `90 deg` may round above π/2
-         with_default(at_most(at_least(number("kappa", Dimension::dimensionless, "fibre dispersion κ"), 0.0), 1.0 / 3.0),
+         with_default(explaining_range(
+                          at_most(at_least(number("kappa", Dimension::dimensionless, "fibre dispersion κ"), 0.0),
+                                  1.0 / 3.0),
+                          "κ runs from 0 (the fibres perfectly aligned along ±β) to 1/3 (isotropic dispersion: the "
+                          "fibres spread evenly in every direction, no preferred one), the dispersion of Gasser, "
+                          "Ogden & Holzapfel (2006). Some papers use another convention (an in-plane dispersion up "
+                          "to 1/2, or the concentration b of the fibres' von Mises distribution, from which κ is "
+                          "computed): convert such a value to this κ"),
                       "0")}},
     [](const Params& p) -> std::unique_ptr<MembraneMaterial> {
       return std::make_unique<HgoMaterial>(p.number("mu"), p.number("k1"), p.number("k2"), p.number("beta"),

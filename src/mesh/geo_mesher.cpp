@@ -294,7 +294,14 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
       message = m[1].str() + m[3].str();
     }
     // One line, printable: the message is Gmsh's, which may quote the script.
-    fail(printable(message, 400), line);
+    std::string text = printable(message, 400);
+    // Gmsh names no curve or point for a boundary that does not close: the likely causes.
+    if (message.find("closed loop") != std::string::npos)
+      text += ". The curves around a surface do not join end to end; likely causes: points at the same position "
+              "that are not merged (curves that end at coincident but distinct points, e.g. after "
+              "`Geometry.AutoCoherence = 0` or from two imported pieces: add `Coherence;` after the geometry, or "
+              "use one point for both), or curves that do not meet (a gap, or a curve missing, in a `Curve Loop`)";
+    fail(text, line);
   }
   std::error_code ec;
   if (!std::filesystem::exists(out, ec))

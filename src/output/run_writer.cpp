@@ -214,16 +214,32 @@ void RunWriter::note_compression(const Analysis& analysis, const IncrementInfo& 
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
     const Part& part = model_.parts[p];
     if (compression_noted_[p] || part.is_solid() || part.is_shell()) continue;
-    const double f = compressed_fraction(analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step));
+    const std::vector<MembranePoint> points =
+        analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step);
+    const double f = compressed_fraction(points);
     if (f <= 0.01) continue;
     compression_noted_[p] = 1;
+    // How strong: the largest compression against the largest tension (or all compression).
+    const CompressionSize size = compression_size(points);
+    const auto kpa = [&](double s) { return model_.units.from_internal(s, "kPa", Dimension::pressure); };
+    const std::string strength =
+        size.tension > 0 && -size.compression > size.tension
+            ? fmt::format("the largest compressive principal stress, {:.4g} kPa, exceeds the largest tension, {:.4g} kPa",
+                          kpa(size.compression), kpa(size.tension))
+        : size.tension > 0
+            ? fmt::format("the largest compressive principal stress is {:.3g} % of the largest tension ({:.4g} kPa "
+                          "against {:.4g} kPa)",
+                          -100 * size.compression / size.tension, kpa(size.compression), kpa(size.tension))
+            : fmt::format("no point is in tension; the largest compressive principal stress is {:.4g} kPa",
+                          kpa(size.compression));
     std::fprintf(stderr,
                  "tunica: note: part '%s' is in compression over %.1f %% of its area at step %d '%s', increment %d "
-                 "(a negative principal stress): a real membrane wrinkles there, which Tunica does not model yet; "
-                 "its results there are those of a membrane that carries compression. The history quantity "
-                 "`compressed_fraction` and the ParaView field `compressed` show where.\n",
+                 "(a negative principal stress below -1 %% of the part's largest; %s): a real membrane wrinkles "
+                 "there, which Tunica does not model yet; its results there are those of a membrane that carries "
+                 "compression. The history quantity `compressed_fraction` and the ParaView field `compressed` show "
+                 "where.\n",
                  terminal_safe(part.name).c_str(), 100 * f, info.step, terminal_safe(info.step_name).c_str(),
-                 info.increment);
+                 info.increment, terminal_safe(strength).c_str());
   }
 }
 

@@ -61,6 +61,11 @@ ParamSpec at_most(ParamSpec p, double max) {
   p.max = max;
   return p;
 }
+ParamSpec explaining_range(ParamSpec p, std::string why) {
+  p.range_fix = std::move(why);
+  return p;
+}
+
 ParamSpec one_of(ParamSpec p, std::vector<std::string> choices) {
   p.choices = std::move(choices);
   return p;

@@ -31,6 +31,9 @@ struct ParamSpec {
   /// The fix a message for the missing key gives, e.g. "add the part's geometry, e.g. `mesh:
   /// {...}`" ("": one built from the type, the unit and the doc). For messages only.
   std::string missing_fix;
+  /// What a message for a value out of range adds: what the bounds mean, a convention that
+  /// differs ("": nothing). For messages only.
+  std::string range_fix;
 };
 
 /// A component's declaration: the key under which decks select it and its parameters.
@@ -55,6 +58,8 @@ ParamSpec positive(ParamSpec p);
 ParamSpec at_least(ParamSpec p, double min);
 ParamSpec at_most(ParamSpec p, double max);
 ParamSpec one_of(ParamSpec p, std::vector<std::string> choices);
+/// p with ParamSpec::range_fix set.
+ParamSpec explaining_range(ParamSpec p, std::string why);
 
 /// Markdown table documenting a component's parameters.
 std::string params_markdown(const ComponentSpec& spec);

@@ -127,8 +127,8 @@ std::vector<Q> make_table() {
   {
     Q q = quantity("compressed_fraction", T::part, none,
                    "fraction of the part's reference membrane volume (area, for a uniform thickness) whose minimum "
-                   "in-plane principal Cauchy stress is negative (below −10⁻⁶ of the part's largest principal "
-                   "stress): where a membrane would wrinkle (elements/membrane_compression.hpp); `reduce` does not apply");
+                   "in-plane principal Cauchy stress is negative (below −1 % of the part's largest principal "
+                   "stress, so that the stress error of a coarse mesh is not compression): where a membrane would wrinkle (elements/membrane_compression.hpp); `reduce` does not apply");
     q.membrane_whole = [](const std::vector<MembranePoint>& pts) { return compressed_fraction(pts); };
     t.push_back(q);
   }

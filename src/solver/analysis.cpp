@@ -1,5 +1,6 @@
 #include "solver/analysis.hpp"
 
+#include "assembly/pressure_load_checks.hpp"
 #include "solver/failure_hints.hpp"
 
 #include <fmt/format.h>
@@ -16,6 +17,25 @@ Analysis::Analysis(const Model& model) : model_(model), system_(model) {
   update_volumes();
   state_.step_start = state_.loads;
   reactions_.setZero(model.num_dofs());
+  for (int l = 0; l < static_cast<int>(model.loads.size()); ++l)
+    orientation_volume_.push_back(volume_sign_is_orientation(model, l));
+}
+
+std::string Analysis::eversion(const Eigen::VectorXd& u, int& load) const {
+  for (int l = 0; l < static_cast<int>(model_.loads.size()); ++l) {
+    if (!orientation_volume_[l] || l >= static_cast<int>(state_.loads.volume.size())) continue;
+    const double before = state_.loads.volume[l], now = system_.volume(u, l);
+    if (!(before * now < 0)) continue;
+    load = l;
+    const PressureLoad& p = model_.loads[l];
+    const std::string unit = model_.units.display_unit(Dimension::volume);
+    return fmt::format(
+        "the converged state is inadmissible: the enclosed volume of load '{}' changed sign, from {:.4g} {} to {:.4g} {}, "
+        "so part '{}' passed through itself (or through its mirror image at a symmetry plane) and is turned inside "
+        "out, a state its strains cannot tell from the right one",
+        p.name, before, unit, now, unit, model_.parts[p.part].name);
+  }
+  return "";
 }
 
 void Analysis::update_volumes() {
@@ -108,9 +128,18 @@ void Analysis::run_step(AnalysisObserver& observer) {
       }
       Eigen::VectorXd u = state_.u;
       system_.apply_boundary(trial, u);
-      const NewtonResult r = solve_increment(system_, *solver, trial, u, settings,
+      NewtonResult r = solve_increment(system_, *solver, trial, u, settings,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
                                     vc.load >= 0 ? &constraint : nullptr, &state_.u);
+      // A converged state whose enclosed volume changed sign is rejected like any inadmissible
+      // state: the increment is cut back.
+      int everted_load = -1;
+      if (r.converged) {
+        if (std::string e = eversion(u, everted_load); !e.empty()) {
+          r.converged = false;
+          r.failure = std::move(e);
+        }
+      }
       if (r.converged) {
         state_.u = u;
         state_.loads = trial;
@@ -119,7 +148,9 @@ void Analysis::run_step(AnalysisObserver& observer) {
         info.iterations = r.iterations;
         break;
       }
-      const std::string why = fmt::format("{} (last relative residual {:.3e})", r.failure, r.last_relative_residual);
+      const std::string why = everted_load >= 0 ? r.failure
+                                                : fmt::format("{} (last relative residual {:.3e})", r.failure,
+                                                              r.last_relative_residual);
       if (stiffened_start && settings.stiffen_stress_free_start) {
         settings.stiffen_stress_free_start = false;
         observer.on_retry(info, why, "retrying with the plain start (stress_free_start: exact)");
@@ -134,7 +165,8 @@ void Analysis::run_step(AnalysisObserver& observer) {
             "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
             "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
             info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
-            failure_hints(model_, step, r, state_.trace, trial) +
+            (everted_load >= 0 ? eversion_hint(model_, everted_load)
+                               : failure_hints(model_, step, r, state_.trace, trial)) +
                 contact_resolution_hints(system_, state_.u, s)));
       }
       observer.on_cutback(info, why);

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "assembly/system.hpp"
 #include "solver/increment.hpp"
@@ -88,11 +89,17 @@ private:
   void update_volumes();
   /// Solves step `state_.step` from `state_.fraction` to its end.
   void run_step(AnalysisObserver& observer);
+  /// Empty, or why the converged state u is inadmissible: the enclosed volume of a load whose
+  /// volume's sign is its surface's orientation (assembly/pressure_load_checks.hpp,
+  /// volume_sign_is_orientation) has the other sign than at the last converged state, so the
+  /// surface passed through itself. `load` receives that load.
+  std::string eversion(const Eigen::VectorXd& u, int& load) const;
 
   const Model& model_;
   System system_;
   Checkpoint state_;
   Eigen::VectorXd reactions_;
+  std::vector<char> orientation_volume_;  ///< per load: volume_sign_is_orientation
   SolverFactory solver_factory_ = make_linear_solver;
 };
 

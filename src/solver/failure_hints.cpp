@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "materials/membrane_material.hpp"
 #include "model/rigid_motion_check.hpp"
 
 namespace tunica {
@@ -75,8 +76,9 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "
                   "raise `max_iterations` in `solver` (now {}).",
                   last.last_relative_residual, step.solver.max_iterations);
-  // One hint for one failure: a pressure at the largest the structure carries has no state to
-  // converge to however many iterations are allowed, so that hint replaces raising the limit;
+  // One hint for one failure: a pressure at a maximum of p(V) (or an asymptote) has no state near
+  // the last one to converge to however many iterations are allowed, so that hint replaces raising
+  // the limit;
   // a curve that flattened but still rises leaves the slow convergence as the evidence.
   std::string limit, rising;
   // A pressure the step raises, under pressure control, whose p–V curve flattens: theory manual §7.1.
@@ -119,18 +121,42 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       const bool beyond = sense * tried >= sense * peak;
       if (beyond) {
         // dp/dV changed sign: a maximum passed; still positive: a maximum or an asymptote ahead.
+        // What lies beyond a maximum depends on the material: one that stiffens at large stretch
+        // carries the pressure again far along the curve (a snap-through), a neo-Hookean one does
+        // not (its pressure falls beyond the maximum or approaches an asymptote).
+        const int part = model.loads[l].part;
+        const MembraneMaterial* material =
+            part >= 0 && part < static_cast<int>(model.parts.size()) ? model.parts[part].material : nullptr;
+        const auto target_kpa = kpa(target->second);
+        std::string beyond_max;
+        if (material && material->type() == "neo_hookean")
+          beyond_max = fmt::format(
+              "Its material (neo_hookean) does not stiffen: beyond the maximum the pressure falls (a balloon) or "
+              "approaches an asymptote (a tube at fixed length), so likely no state carries the {:.4g} kPa the failed "
+              "increment tried. Lower the load below about {:.4g} kPa",
+              kpa(tried), kpa(end.pressure[l]));
+        else
+          beyond_max = fmt::format(
+              "Beyond a maximum the structure may snap through to a larger volume where the pressure rises again, "
+              "if its material stiffens at large stretch ({}Mooney–Rivlin, Ogden, Fung and HGO can): the {:.4g} kPa "
+              "the failed increment tried and the step's target, {:.4g} kPa, may then be carried far along the "
+              "curve, which pressure control cannot reach from here. Lower the load below about {:.4g} kPa only if "
+              "the target is meant to lie below the maximum",
+              material ? fmt::format("part '{}' is {}; ", model.parts[part].name, material->type()) : "", kpa(tried),
+              target_kpa, kpa(end.pressure[l]));
         limit += fmt::format(
             " Hint: the pressure–volume curve of load '{}' has flattened over this step (dp/dV down to {:.0f} % of its "
-            "value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at the largest the "
-            "structure carries ({}), and no state carries the {:.4g} kPa the failed increment tried{}. Lower the "
-            "load below about {:.4g} kPa, or control the enclosed volume instead: a step with `volume_control: "
-            "{{load: {}, volume: <enclosed volume>}}` passes a maximum and approaches an asymptote from below "
-            "(user guide §3.1, volume control).",
+            "value at the step's start, at {:.4g} kPa = {:.4g} mmHg): the pressure is likely at {}: pressure control "
+            "cannot pass it{}. {}. To follow the curve through a maximum, "
+            "control the enclosed volume instead: a step with `volume_control: {{load: {}, volume: <enclosed "
+            "volume>}}` passes a maximum and approaches an asymptote from below (user guide §3.1, volume control).",
             model.loads[l].name, 100 * now / first, kpa(end.pressure[l]), mmhg(end.pressure[l]),
-            now / first <= 0 ? "a maximum of the curve, a limit point, already passed"
-                             : "a maximum of the curve, a limit point, or an asymptote that it approaches",
-            kpa(tried), still_converging ? " (raising `max_iterations` would not help)" : "", kpa(end.pressure[l]),
-            model.loads[l].name);
+            now / first <= 0
+                ? "a maximum of the curve near the last converged state (a limit point, already passed: dp/dV has "
+                  "turned negative)"
+                : "a maximum of the curve near the last converged state (a limit point), or at an asymptote that it "
+                  "approaches",
+            still_converging ? " (raising `max_iterations` would not help)" : "", beyond_max, model.loads[l].name);
       } else {
         const std::string trend =
             std::isfinite(peak) ? fmt::format("its trend puts a maximum near {:.4g} kPa, above the {:.4g} kPa the failed "
@@ -165,6 +191,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   if (still_converging) add(more_iterations);
   else hints += rising;
   return hints;
+}
+
+std::string eversion_hint(const Model& model, int load) {
+  const std::string& name = model.loads[load].name;
+  return fmt::format(
+      " Hint: Newton found equilibrium only with the surface of load '{}' turned inside out (its enclosed volume of "
+      "the other sign), which no real membrane reaches: the increment starts too far from the state it should end "
+      "at, most likely at or near a maximum of the pressure (a limit point), beyond which the pressure's next "
+      "equilibrium lies far along the curve. Take smaller increments (a larger `increments` in the step, or "
+      "`max_cutbacks` in `solver`), or control the enclosed volume instead, which keeps its sign and follows the "
+      "curve through a maximum: a step with `volume_control: {{load: {}, volume: <enclosed volume>}}` (user guide "
+      "§3.1, volume control).",
+      name, name);
 }
 
 std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step) {

@@ -18,10 +18,13 @@ namespace tunica {
 ///    load flattened over the step's converged increments (dp/dV of the last below a fifth of
 ///    the first's, or negative): if the pressure the failed increment tried lies at or beyond
 ///    the maximum that the curve's trend predicts (theory manual (7.9); the maximum passed when
-///    dp/dV has changed sign), the largest pressure the structure carries (a maximum or an
-///    asymptote): lower the load, or `volume_control` — whatever Newton's residual did, since
-///    no state exists to converge to (raising `max_iterations` would not help, and is said so
-///    when Newton was still converging);
+///    dp/dV has changed sign), a maximum near the last converged state (a limit point) or an
+///    asymptote, which pressure control cannot pass: `volume_control` follows the curve through
+///    it; beyond it a material that stiffens (all but neo-Hookean) may snap through to a larger
+///    volume where the pressure rises again, so the load is to be lowered below the maximum only
+///    if the target is meant to lie below it (a neo-Hookean membrane has no such state: lower the
+///    load) — whatever Newton's residual did, since no state near the last one exists to converge
+///    to (raising `max_iterations` would not help, and is said so when Newton was still converging);
 ///  - else a singular tangent of a held model: no stiffness left against the load, likely a load
 ///    beyond what the structure carries (the loads tried and their targets; smaller increments,
 ///    `volume_control`; bodies held by contact alone), unless the curve says the pressure still
@@ -35,6 +38,12 @@ namespace tunica {
 /// restart); `attempted`: the loads of the failed increment.
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
                           const LoadState& attempted);
+
+/// The hint of an increment whose every attempt, down to the smallest allowed, converged to a
+/// state that load `load`'s surface reaches only by passing through itself (the enclosed volume
+/// changed sign, solver/analysis.hpp): smaller increments, or volume control, which keeps the
+/// volume's sign.
+std::string eversion_hint(const Model& model, int load);
 
 /// The slave nodes of a deformable contact pair that are active at u, next to each other on the
 /// slave chain, lie this many master segments apart on average (or more): the slave is the

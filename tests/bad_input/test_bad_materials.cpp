@@ -100,7 +100,11 @@ TEST(BadMaterials, HgoK2NotPositive) {
 
 TEST(BadMaterials, HgoDispersionAboveOneThird) {
   expect_error("hgo-kappa", replace(kHgo, "kappa: 0.2", "kappa: 0.4"), "kappa: 0.4", "materials.aorta.kappa",
-               "value 0.4 is out of range (must be >= 0, <= 0.333333)");
+               "value 0.4 is out of range (must be >= 0, <= 0.333333): κ runs from 0 (the fibres perfectly aligned "
+               "along ±β) to 1/3 (isotropic dispersion");
+  // The bounds are explained, and another paper's convention named.
+  expect_error("hgo-kappa-convention", replace(kHgo, "kappa: 0.2", "kappa: 0.45"), "kappa: 0.45", "materials.aorta.kappa",
+               "Some papers use another convention (an in-plane dispersion up to 1/2");
 }
 
 TEST(BadMaterials, HgoNegativeK1) {

@@ -212,6 +212,38 @@ TEST(BadMeshes, TunicaMeshRefusesWhatIsNotAScriptOrNotAMeshFileAndBadResults) {
   EXPECT_NE(o.output.find("exits.geo: the script ended before Gmsh wrote a mesh"), std::string::npos) << o.output;
 }
 
+TEST(BadMeshes, AFailedTunicaMeshSaysTheEarlierMeshIsKeptAndWhyAnEdgeLoopDoesNotClose) {
+  // Two strips extruded from lines whose shared end is two points at the same position: with
+  // AutoCoherence off they are not merged, and Gmsh stops with "not forming a closed loop",
+  // naming no curve.
+  const fs::path dir = scratch("bad-meshes", "open-loop");
+  std::ofstream(dir / "strip.geo") << "Geometry.AutoCoherence = 0;\n"
+                                      "Point(1) = {0, 0, 0, 0.25}; Point(2) = {1, 0, 0, 0.25};\n"
+                                      "Point(3) = {1, 0, 0, 0.25}; Point(4) = {2, 0, 0, 0.25};\n"
+                                      "Line(1) = {1, 2}; Line(2) = {3, 4};\n"
+                                      "a[] = Extrude {0, 1, 0} { Curve{1}; };\n"
+                                      "b[] = Extrude {0, 1, 0} { Curve{2}; };\n"
+                                      "Physical Surface(\"wall\") = {a[1], b[1]};\n";
+  fs::remove(dir / "strip.msh");
+  Outcome o = run_cli("mesh " + (dir / "strip.geo").string() + " -o " + (dir / "strip.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("closed loop"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("points at the same position that are not merged"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("add `Coherence;` after the geometry"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("curves that do not meet"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("nothing was written (" + (dir / "strip.msh").string() + " was not created)"),
+            std::string::npos)
+      << o.output;
+  EXPECT_FALSE(fs::exists(dir / "strip.msh"));
+  // An earlier mesh of that name stays as it was, and the message says so.
+  std::ofstream(dir / "strip.msh") << "earlier";
+  o = run_cli("mesh " + (dir / "strip.geo").string() + " -o " + (dir / "strip.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("the earlier " + (dir / "strip.msh").string() + " is left unchanged"), std::string::npos)
+      << o.output;
+  EXPECT_EQ(read_text((dir / "strip.msh").string()), "earlier");
+}
+
 TEST(BadMeshes, TerminatingTunicaMeshEndsGmshAndLeavesNoTemporaryFolder) {
   const fs::path dir = scratch("bad-meshes", "mesh-sigterm");
   fs::create_directories(dir / "tmp");

@@ -416,6 +416,15 @@ TEST(MessageClasses, NodeNumberOutsideThePartGivesTheNumberAndTheRange) {
                       "nodes: [0, 7]", "node_sets.mid.nodes[1]", "node index 7 is outside the part", "(0 … 1)");
 }
 
+TEST(MessageClasses, ANodeListedTwiceInANodeSetNamesTheSetTheNodeAndBothPlaces) {
+  // Held, loaded or reported twice otherwise (a reaction summed twice); most often a mistyped index.
+  const Outcome o = expect_deck_message("node-twice", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [0, 1, 0]}\n\nboundary:",
+                                        "nodes: [0, 1, 0]", "node_sets.mid.nodes[2]",
+                                        "node set 'mid' lists node 0 twice: first as nodes[0] (line ",
+                                        "List each node once; if another node was meant here, correct this index");
+  EXPECT_SAYS(o, "again here as nodes[2]");
+}
+
 // ---------------------------------------------------------------- mesh files named by a deck
 
 TEST(MessageClasses, MissingMeshFileGivesThePathAsResolvedAndTheNearestName) {

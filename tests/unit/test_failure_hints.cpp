@@ -127,11 +127,11 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   ASSERT_NE(near, std::string::npos) << h;
   EXPECT_NEAR(std::stod(h.substr(near + 30)), kpa(1.3025), 1e-3 * kpa(1.3025)) << h;
   EXPECT_NE(h.find(fmt::format("kPa, above the {:.4g} kPa the failed increment tried", kpa(1.25))), std::string::npos) << h;
-  EXPECT_EQ(h.find("likely at the largest the structure carries"), std::string::npos) << h;
+  EXPECT_EQ(h.find("likely at a maximum of the curve"), std::string::npos) << h;
   EXPECT_EQ(h.find("volume_control: {load"), std::string::npos) << h;
   // Trying beyond the predicted maximum: the limit point and volume control.
   const std::string beyond = failure_hints(m, raising(3), failed("diverging", 1), slowing, trying(1.31));
-  EXPECT_NE(beyond.find("likely at the largest the structure carries"), std::string::npos) << beyond;
+  EXPECT_NE(beyond.find("likely at a maximum of the curve"), std::string::npos) << beyond;
   EXPECT_NE(beyond.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << beyond;
   // A flattened curve whose dp/dV no longer falls: no maximum in sight.
   const std::string steady =
@@ -140,7 +140,7 @@ TEST(FailureHints, AFlatteningCurveShortOfItsMaximumIsNotCalledALimitPoint) {
   // Past the maximum (dp/dV negative): the limit point whatever was tried.
   const std::string past =
       failure_hints(m, raising(3), failed("diverging", 1), along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
-  EXPECT_NE(past.find("likely at the largest the structure carries"), std::string::npos) << past;
+  EXPECT_NE(past.find("likely at a maximum of the curve"), std::string::npos) << past;
 }
 
 TEST(FailureHints, AtTheLargestPressureASlowNewtonGetsOneHintNotTwo) {
@@ -151,8 +151,8 @@ TEST(FailureHints, AtTheLargestPressureASlowNewtonGetsOneHintNotTwo) {
   const auto flat = along({{0, 0}, {1, 1}, {1.5, 2}, {1.6, 3}, {1.601, 4}});
   const std::string h = failure_hints(m, raising(1.61), failed("no convergence in 12 iterations", 2e-4), flat, trying(1.605));
   EXPECT_EQ(h.find("Hint:"), h.rfind("Hint:")) << "one hint: " << h;
-  EXPECT_NE(h.find("likely at the largest the structure carries (a maximum of the curve, a limit point, or an "
-                   "asymptote that it approaches)"),
+  EXPECT_NE(h.find("likely at a maximum of the curve near the last converged state (a limit point), or at an "
+                   "asymptote that it approaches: pressure control cannot pass it"),
             std::string::npos)
       << h;
   EXPECT_NE(h.find("(raising `max_iterations` would not help)"), std::string::npos) << h;
@@ -161,7 +161,8 @@ TEST(FailureHints, AtTheLargestPressureASlowNewtonGetsOneHintNotTwo) {
   // Past the maximum (dp/dV negative): said as passed.
   const std::string past = failure_hints(m, raising(3), failed("no convergence in 12 iterations", 2e-4),
                                          along({{0, 0}, {1, 1}, {1.1, 2}, {1.05, 3}}), trying(1.06));
-  EXPECT_NE(past.find("a maximum of the curve, a limit point, already passed"), std::string::npos) << past;
+  EXPECT_NE(past.find("a maximum of the curve near the last converged state (a limit point, already passed: dp/dV has "
+                            "turned negative)"), std::string::npos) << past;
   // Short of the predicted maximum, still converging: more iterations, alone.
   const std::string slow = failure_hints(m, raising(3), failed("no convergence in 12 iterations", 2e-4),
                                          along({{0, 0}, {1, 1}, {1.1, 2}, {1.18, 3}, {1.24, 4}}), trying(1.25));
@@ -197,6 +198,36 @@ steps:
 )";
 
 }  // namespace
+
+TEST(FailureHints, BeyondAMaximumAStiffeningMaterialMaySnapThroughAndANeoHookeanOneCannot) {
+  // The trial's Mooney–Rivlin sac under pressure control: a shallow maximum of p(V) at 6.674 kPa,
+  // past which the pressure rises again (16 kPa, the target, at λ = 10.2). The hint must not say
+  // that no state carries the pressure tried, nor send the user below the maximum unconditionally.
+  const auto flat = along({{0, 0}, {1, 1}, {1.5, 2}, {1.6, 3}, {1.601, 4}});
+  const std::string mr_deck = replace_first(kHeldTube, "{type: neo_hookean, mu: 100 kPa}",
+                                            "{type: mooney_rivlin, b1: 150 kPa, b2: 30 kPa}");
+  const Model mr = read_deck_text(mr_deck, "mr.yaml");
+  LoadState tried = trying(1.605);
+  tried.step = 0;
+  const std::string h = failure_hints(mr, raising(16), failed("diverging", 1), flat, tried);
+  EXPECT_EQ(h.find("Hint:"), h.rfind("Hint:")) << "one hint: " << h;
+  EXPECT_NE(h.find("near the last converged state (a limit point), or at an asymptote that it approaches: "
+                   "pressure control cannot pass it"), std::string::npos) << h;
+  EXPECT_NE(h.find("may snap through to a larger volume where the pressure rises again"), std::string::npos) << h;
+  EXPECT_NE(h.find("part 'wall' is mooney_rivlin"), std::string::npos) << h;
+  EXPECT_NE(h.find("the step's target, 1.6e+04 kPa"), std::string::npos) << h;
+  EXPECT_NE(h.find("only if the target is meant to lie below the maximum"), std::string::npos) << h;
+  EXPECT_NE(h.find("`volume_control: {load: blood, volume: <enclosed volume>}`"), std::string::npos) << h;
+  EXPECT_EQ(h.find("no state carries"), std::string::npos) << h;
+  // A neo-Hookean membrane has no state beyond its maximum: lower the load.
+  const Model nh = read_deck_text(kHeldTube, "nh.yaml");
+  const std::string n = failure_hints(nh, raising(16), failed("diverging", 1), flat, tried);
+  EXPECT_NE(n.find("(neo_hookean) does not stiffen"), std::string::npos) << n;
+  EXPECT_NE(n.find("likely no state carries the 1605 kPa the failed increment tried. Lower the load below about 1601 kPa"),
+            std::string::npos)
+      << n;
+  EXPECT_EQ(n.find("snap through"), std::string::npos) << n;
+}
 
 TEST(FailureHints, ASingularTangentOfAHeldModelIsALoadBeyondWhatItCarries) {
   // The trial's `lumen: 4` meant as kPa: 4 N/mm², 800 times the tube's asymptote μH/R = 5 kPa.

@@ -16,7 +16,9 @@ TEST(GaussLegendre, IntegratesPolynomialsOfDegreeTwoNMinusOneExactly) {
     ASSERT_EQ(static_cast<int>(g.t.size()), n);
     for (int i = 0; i < n; ++i) {
       EXPECT_NEAR(g.t[i], -g.t[n - 1 - i], 1e-15) << n;
-      if (i > 0) EXPECT_LT(g.t[i - 1], g.t[i]) << n;
+      if (i > 0) {
+        EXPECT_LT(g.t[i - 1], g.t[i]) << n;
+      }
     }
     for (int k = 0; k <= 2 * n - 1; ++k) {
       double q = 0;

@@ -136,8 +136,11 @@ TEST(HistoryQuantities, EachHasTheEvaluatorOfItsTargetAndUniqueName) {
     EXPECT_EQ(static_cast<bool>(q.global), q.target == QuantityTarget::none) << q.name;
     EXPECT_EQ(static_cast<bool>(q.at), q.target == QuantityTarget::load || q.target == QuantityTarget::node_set) << q.name;
     EXPECT_EQ(static_cast<bool>(q.contact), q.target == QuantityTarget::contact) << q.name;
-    if (part) EXPECT_TRUE(q.membrane || q.membrane_whole || q.solid) << q.name;
-    else EXPECT_FALSE(q.membrane || q.membrane_whole || q.solid) << q.name;
+    if (part) {
+      EXPECT_TRUE(q.membrane || q.membrane_whole || q.solid) << q.name;
+    } else {
+      EXPECT_FALSE(q.membrane || q.membrane_whole || q.solid) << q.name;
+    }
   }
   EXPECT_EQ(find_history_quantity("no_such_quantity"), nullptr);
 }

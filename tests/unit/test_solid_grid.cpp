@@ -54,13 +54,17 @@ TEST(SolidGrid, NumberingChainsAndCounterClockwiseElements) {
   for (std::size_t k = 0; k < g.inner.size(); ++k) {
     EXPECT_DOUBLE_EQ(g.nodes[g.inner[k]](0), 1.0);
     EXPECT_DOUBLE_EQ(g.nodes[g.outer[k]](0), 1.5);
-    if (k > 0) EXPECT_GT(g.nodes[g.inner[k]](1), g.nodes[g.inner[k - 1]](1));
+    if (k > 0) {
+      EXPECT_GT(g.nodes[g.inner[k]](1), g.nodes[g.inner[k - 1]](1));
+    }
   }
   EXPECT_DOUBLE_EQ(g.nodes[g.inner.back()](1), 2.0);
   for (std::size_t k = 0; k < g.bottom.size(); ++k) {
     EXPECT_DOUBLE_EQ(g.nodes[g.bottom[k]](1), -1.0);
     EXPECT_DOUBLE_EQ(g.nodes[g.top[k]](1), 2.0);
-    if (k > 0) EXPECT_GT(g.nodes[g.top[k]](0), g.nodes[g.top[k - 1]](0));
+    if (k > 0) {
+      EXPECT_GT(g.nodes[g.top[k]](0), g.nodes[g.top[k - 1]](0));
+    }
   }
 }
 
