@@ -5,6 +5,7 @@
 // 2 ms while it runs. And the results of -j 1 and -j 2 are the same bit for bit, the BLAS's
 // rounding included (the restart file holds the displacements in hexadecimal floating point).
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,7 +28,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("tunica-threads-" + std::to_string(getpid())) / name;
+  const fs::path d = fs::temp_directory_path() / fmt::format("tunica-threads-{}", getpid()) / name;
   fs::remove_all(d);
   fs::create_directories(d);
   return d;
@@ -148,14 +149,14 @@ TEST(ComputeThreads, ARunComputesOnNoMoreThreadsThanItsCount) {
   const fs::path dir = scratch("count");
   const std::string deck = tube_deck(dir);
   for (const int n : {1, 2}) {
-    const Sampled s = run_sampled(deck, dir / ("j" + std::to_string(n)), n);
+    const Sampled s = run_sampled(deck, dir / fmt::format("j{}", n), n);
     ASSERT_EQ(s.exit_code, 0) << "-j " << n;
     ASSERT_GT(s.samples, 10) << "-j " << n << ": the run ended before it could be observed";
     // Not more than n; and n, not fewer: the element loops do use the threads they are given.
     EXPECT_EQ(s.most, n) << "-j " << n << ": " << s.samples << " samples, the most compute threads in one:"
                          << s.at_most;
     // TUNICA_THREADS left in the environment without the settings it marks: still n.
-    const Sampled m = run_sampled(deck, dir / ("marker" + std::to_string(n)), n, true);
+    const Sampled m = run_sampled(deck, dir / fmt::format("marker{}", n), n, true);
     ASSERT_EQ(m.exit_code, 0) << "-j " << n << ", TUNICA_THREADS preset";
     ASSERT_GT(m.samples, 10) << "-j " << n << ", TUNICA_THREADS preset: the run ended before it could be observed";
     EXPECT_LE(m.most, n) << "-j " << n << ", TUNICA_THREADS preset: " << m.samples
@@ -167,7 +168,7 @@ TEST(ComputeThreads, ResultsAreIdenticalBitForBitWithOneAndTwoThreads) {
   const fs::path dir = scratch("bits");
   const std::string deck = tube_deck(dir);
   for (const char* j : {"1", "2"}) {
-    const std::string out = (dir / (std::string("j") + j)).string();
+    const std::string out = (dir / fmt::format("j{}", j)).string();
     const int status = std::system((std::string(TUNICA_BINARY) + " run " + deck + " -q -j " + j + " -o " + out +
                                     " > /dev/null 2>&1").c_str());
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "-j " << j;
@@ -179,8 +180,8 @@ TEST(ComputeThreads, ResultsAreIdenticalBitForBitWithOneAndTwoThreads) {
             rows_without(read_text((dir / "j2" / "newton.csv").string()), varying));
   // Each row of newton.csv says how many threads computed it.
   for (const char* j : {"1", "2"}) {
-    const auto all = rows_without(read_text((dir / (std::string("j") + j) / "newton.csv").string()), {});
-    const auto without = rows_without(read_text((dir / (std::string("j") + j) / "newton.csv").string()),
+    const auto all = rows_without(read_text((dir / fmt::format("j{}", j) / "newton.csv").string()), {});
+    const auto without = rows_without(read_text((dir / fmt::format("j{}", j) / "newton.csv").string()),
                                       {"step", "increment", "attempt", "iteration", "time", "residual", "relative_residual",
                                        "energy", "relative_energy", "backtracks", "active_contacts", "active_changes",
                                        "solver", "assembly_s", "factor_s", "solve_s"});
