@@ -4,6 +4,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "elements/collapse.hpp"
+
 namespace tunica {
 
 void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const MembraneMaterial& material,
@@ -31,6 +33,8 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
     const double R = N0 * X(0, 0) + N1 * X(0, 1);
     const double r = N0 * x(0, 0) + N1 * x(0, 1);
     if (!(r > 0)) throw std::domain_error("axisymmetric membrane: radius not positive at a Gauss point");
+    if (!(r * std::sqrt(l2) > kCollapsedAreaStretch * R * L))  // λθ λs = (r/R)(ℓ/L)
+      throw std::domain_error(collapse_message("axisymmetric membrane: at a Gauss point"));
     // Hoop strain (theory manual (5.3)): E_θ = ½(r²/R² − 1), ∂E_θ/∂u = r N_r / R², ∂²E_θ/∂u² = N_r N_rᵀ / R².
     const double Et = 0.5 * (r * r / (R * R) - 1.0);
     const Eigen::Vector4d Nr(N0, 0.0, N1, 0.0);

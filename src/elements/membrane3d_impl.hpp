@@ -22,6 +22,7 @@
 // Included only by the files that instantiate them for a shape (membrane3d.cpp: tri3 and
 // quad4; a new shape: its own file); every other file includes membrane3d.hpp.
 #include "elements/membrane3d.hpp"
+#include "elements/collapse.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -116,6 +117,8 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
     const Eigen::Vector3d C(f1.squaredNorm(), f2.squaredNorm(), f1.dot(f2));
     if (!(C(0) * C(1) - C(2) * C(2) > 0))
       throw std::domain_error("3-D membrane: in-plane det C is not positive at a Gauss point (element collapsed)");
+    if (!(C(0) * C(1) - C(2) * C(2) > kCollapsedAreaStretch * kCollapsedAreaStretch))  // det C = (λ₁λ₂)²
+      throw std::domain_error(collapse_message("3-D membrane: at a Gauss point"));
     const MembraneResponse m = membrane_response(material, C);
     const double w = ref.weight[q];
     Eigen::Matrix2d S2;  // S as a 2 × 2 tensor
