@@ -594,7 +594,11 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
           }
         }
         s.targets[target] = read_quantity(value, dim, m.units);
-        if (is_load) warn_if_unitless(value, Dimension::pressure, m, true);
+        if (is_load && warn_if_unitless(value, Dimension::pressure, m, true)) {
+          std::string where = format_location(value.where(), "");
+          while (!where.empty() && (where.back() == ' ' || where.back() == ':')) where.pop_back();
+          s.unitless_loads[target] = {where, value.as_string()};
+        }
         if (slopes > 0 && positions > 0 && s.targets[target] != 0)
           value.fail("boundary '" + target + "' holds slopes and positions: it can only be 0 (give the slopes their "
                      "own boundary to prescribe them)");

@@ -216,6 +216,9 @@ struct Step {
   bool inverse = false;
   int increments = 1;
   std::map<std::string, double> targets;  ///< boundary or load name → value at the end of the step
+  /// Load name → where its target was written without a unit ("deck.yaml:27:19: key
+  /// 'steps[0].set.lumen'", the reader warned about it) and the number as written.
+  std::map<std::string, std::pair<std::string, std::string>> unitless_loads;
   VolumeControl volume_control;           ///< load < 0: none
   SolverSettings solver;
 };

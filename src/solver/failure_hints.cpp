@@ -67,6 +67,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
                           const LoadState& attempted) {
   std::string hints;
   const auto add = [&](const std::string& h) { hints += " Hint: " + h; };
+  // A load the step raises that was written without a unit (the reader warned): a bare `150` is
+  // 150 N/mm² in mm and N, a million mmHg, beyond what any membrane carries; this comes first.
+  for (const auto& [load, written] : step.unitless_loads) {
+    const auto target = step.targets.find(load);
+    if (target == step.targets.end()) continue;
+    const auto kpa = model.units.from_internal(target->second, "kPa", Dimension::pressure);
+    const auto mmhg = model.units.from_internal(target->second, "mmHg", Dimension::pressure);
+    return fmt::format(
+        " Hint: load '{}' is set to `{}` without a unit ({}), which is read in the deck's pressure unit, {}: {:.4g} kPa "
+        "= {:.4g} mmHg. If mmHg or kPa was meant, write it (`{} mmHg`); raising `max_iterations` or cutting the "
+        "increments finer will not carry such a load.",
+        load, written.second, written.first, model.units.display_unit(Dimension::pressure), kpa, mmhg, written.second);
+  }
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
   // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.

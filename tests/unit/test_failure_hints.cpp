@@ -358,3 +358,23 @@ TEST(FailureHints, ASlaveCoarserThanItsMasterInContactIsNamed) {
   // Two-pass contact already holds the master's nodes: nothing to say either.
   EXPECT_EQ(hint_for_pressed(4, 16, ", passes: 2"), "");
 }
+
+TEST(FailureHints, ALoadWrittenWithoutAUnitComesFirst) {
+  // A bare `150` meant as mmHg is 150 N/mm²: no iteration limit or increment carries it.
+  const Model m = one_load_model();
+  Step s = raising(150);
+  s.unitless_loads["blood"] = {"deck.yaml:27:19: key 'steps[1].set.blood'", "150"};
+  const auto linear = along({{0, 1}, {1, 2}, {2, 3}});
+  const std::string h = failure_hints(m, s, failed("no convergence in 12 iterations", 9e-7), linear, trying(2.5));
+  EXPECT_NE(h.find("load 'blood' is set to `150` without a unit (deck.yaml:27:19: key 'steps[1].set.blood')"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("`150 mmHg`"), std::string::npos) << h;
+  EXPECT_EQ(h.find("raise `max_iterations` in"), std::string::npos) << "one hint per failure: " << h;
+  // A load the step does not set: no such hint.
+  Step other = raising(150);
+  other.unitless_loads["wall"] = {"deck.yaml:30:9", "4"};
+  EXPECT_EQ(failure_hints(m, other, failed("no convergence in 12 iterations", 9e-7), linear, trying(2.5))
+                .find("without a unit"),
+            std::string::npos);
+}
