@@ -378,3 +378,16 @@ TEST(FailureHints, ALoadWrittenWithoutAUnitComesFirst) {
                 .find("without a unit"),
             std::string::npos);
 }
+
+TEST(FailureHints, AnInverseStepThatStopsPointsToTheImagedMesh) {
+  const Model m = one_load_model();
+  Step s = raising(0.01);
+  s.inverse = true;
+  const auto linear = along({{0, 1}, {0.001, 2}});
+  const std::string h = failure_hints(m, s, failed("stagnating", 0.07), linear, trying(0.002));
+  EXPECT_NE(h.find("an inverse step finds a reference only for an imaged mesh that the discrete membrane can carry"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("user guide §3.5"), std::string::npos) << h;
+  EXPECT_EQ(failure_hints(m, raising(0.01), failed("stagnating", 0.07), linear, trying(0.002)), "");
+}
