@@ -32,29 +32,6 @@ inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
 }  // namespace detail
 
 template <int N>
-void surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& f, ElementMatrix<N>* dfdx) {
-  constexpr int Q = SurfaceShapeTraits<N>::kPoints;
-  f.setZero();
-  if (dfdx) dfdx->setZero();
-  for (int q = 0; q < Q; ++q) {
-    double xi, eta, w;
-    gauss_point<N>(q, xi, eta, w);
-    const Eigen::Matrix<double, N, 1> Nq = shape_values<N>(xi, eta);
-    const Eigen::Matrix<double, N, 2> dN = shape_derivatives<N>(xi, eta);
-    const Eigen::Matrix<double, 3, 2> g = x * dN;
-    const Eigen::Vector3d n = g.col(0).cross(g.col(1));
-    for (int a = 0; a < N; ++a) f.template segment<3>(3 * a) += (p * w * Nq(a)) * n;
-    if (dfdx) {
-      const Eigen::Matrix3d g1x = detail::cross_matrix(g.col(0)), g2x = detail::cross_matrix(g.col(1));
-      for (int b = 0; b < N; ++b) {
-        const Eigen::Matrix3d dn_b = dN(b, 1) * g1x - dN(b, 0) * g2x;  // ∂n/∂x_b
-        for (int a = 0; a < N; ++a) dfdx->template block<3, 3>(3 * a, 3 * b) += (p * w * Nq(a)) * dn_b;
-      }
-    }
-  }
-}
-
-template <int N>
 double subtract_surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& r, ElementMatrix<N>* K) {
   constexpr int Q = SurfaceShapeTraits<N>::kPoints;
   ElementVector<N> f = ElementVector<N>::Zero();
@@ -87,6 +64,15 @@ double subtract_surface_pressure(const SurfaceNodes<N>& x, double p, ElementVect
   }
   r -= f;
   return f.squaredNorm();
+}
+
+template <int N>
+void surface_pressure(const SurfaceNodes<N>& x, double p, ElementVector<N>& f, ElementMatrix<N>* dfdx) {
+  // f_p and ∂f_p/∂x alone: subtracting the load of −p from zero (f_p is linear in p; the negations
+  // are exact, so the values are those of the in-place form to the last bit).
+  f.setZero();
+  if (dfdx) dfdx->setZero();
+  subtract_surface_pressure<N>(x, -p, f, dfdx);
 }
 
 template <int N>
