@@ -5,6 +5,11 @@
 
 namespace tunica {
 
+namespace {
+// |I* − 1| below which a fibre family is on its kink (round-off of C at the reference, far below any strain).
+constexpr double kKinkBand = 1e-12;
+}  // namespace
+
 HgoMaterial::HgoMaterial(double mu, double k1, double k2, double beta, double kappa)
     : mu_(mu), k1_(k1), k2_(k2) {
   // I*_i = κ I1 + (1 − 3κ) I4_i is linear in v = (C11, C22, C12, C33):
@@ -31,6 +36,14 @@ EnergyDerivatives HgoMaterial::energy(const Eigen::Vector4d& v) const {
   for (int i = 0; i < 2; ++i) {
     const Eigen::Vector4d& a = dI_[i];
     const double e = fibre_strain(i, v);  // I* − 1
+    // The tension-only switch is a kink at I* = 1: Ψ' is continuous there, Ψ'' jumps from 0 to k1.
+    // The stress-free reference lies on it, where e is a few ulps of either sign from Gauss point
+    // to Gauss point; within round-off the tangent is the mean of the two sides, k1/2, at every
+    // point alike (theory manual (3.5a)).
+    if (std::abs(e) <= kKinkBand) {
+      out.d2W += 0.5 * k1_ * (a * a.transpose());
+      continue;
+    }
     if (!(e > 0.0)) continue;  // tension only
     const double x = std::exp(k2_ * e * e);
     out.W += 0.5 * k1_ / k2_ * (x - 1.0);
