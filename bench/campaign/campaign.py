@@ -144,6 +144,59 @@ output: {{vtk: false}}
 """
 
 
+def sac_axisym(elements, whole):
+    """A Mooney-Rivlin sac (R 4 mm, H 0.05 mm) inflated under volume control from rest to
+    lambda = 2.5, past its pressure maximum: the whole meridian or the upper half."""
+    start = -90 if whole else 0
+    south = "  south: {node_set: sac.start, dofs: [r, z]}\n" if whole else "  equator: {node_set: sac.start, dofs: [z]}\n"
+    volume = "4188.790205" if whole else "2094.395102"
+    return f"""title: campaign Mooney-Rivlin sac, {'whole' if whole else 'half'} meridian of {elements}, volume control from rest
+units: {{length: mm, force: N}}
+materials:
+  wall: {{type: mooney_rivlin, b1: 150 kPa, b2: 30 kPa}}
+parts:
+  sac:
+    element: axisymmetric_membrane
+    material: wall
+    thickness: 0.05 mm
+    mesh: {{type: arc, center: [0 mm, 0 mm], radius: 4 mm, start_angle: {start} deg, end_angle: 90 deg, elements: {elements}}}
+boundary:
+{south}  north: {{node_set: sac.end, dofs: [r]}}
+loads:
+  blood: {{type: pressure, part: sac}}
+steps:
+  - {{name: inflate, increments: 10, volume_control: {{load: blood, volume: {volume} mm^3}}}}
+output: {{vtk: false}}
+"""
+
+
+def hgo_quarter_tube(around, along):
+    """An HGO quarter tube of triangles stretched from rest to lambda_z = 1.3 under 10 mmHg, then
+    inflated to 120 mmHg (as the user guide's rat-aorta-3d is written)."""
+    return f"""title: campaign HGO quarter tube, {around}x{along} triangles, stretch with 10 mmHg then 120 mmHg
+units: {{length: mm, force: N}}
+materials:
+  media: {{type: hgo, mu: 30 kPa, k1: 200 kPa, k2: 8, beta: 40 deg, kappa: 0.1}}
+parts:
+  wall:
+    element: membrane
+    material: media
+    thickness: 0.2 mm
+    mesh: {{type: tube, radius: 1.5 mm, length: 5 mm, sector: 90 deg, around: {around}, along: {along}, shape: triangle}}
+{FRAME}boundary:
+  sym_x: {{node_set: wall.x0, dofs: [x]}}
+  sym_y: {{node_set: wall.y0, dofs: [y]}}
+  base: {{node_set: wall.bottom, dofs: [z]}}
+  stretch: {{node_set: wall.top, dofs: [z]}}
+loads:
+  lumen: {{type: pressure, part: wall}}
+steps:
+  - {{name: prestretch, increments: 2, set: {{stretch: 1.5 mm, lumen: 10 mmHg}}}}
+  - {{name: inflation, increments: 4, set: {{lumen: 120 mmHg}}}}
+output: {{vtk: false}}
+"""
+
+
 def decks():
     out = {}
     for mat in MATERIALS:
@@ -165,6 +218,11 @@ def decks():
     # The HGO artery of the user guide in one increment per step, and in 5 + 10.
     out["hgo-artery-quad-32x40-1+1inc"] = hgo_artery(1, 1)
     out["hgo-artery-quad-32x40-5+10inc"] = hgo_artery(5, 10)
+    # Volume control from rest through the pressure maximum on fine meridians, and an HGO quarter
+    # tube stretched from rest (the fifth docs-only trial's decks).
+    out["sac-mooney_rivlin-axisym-whole-1000-volume-10inc"] = sac_axisym(1000, True)
+    out["sac-mooney_rivlin-axisym-half-500-volume-10inc"] = sac_axisym(500, False)
+    out["quarter-tube-hgo-tri-50x200-stretch-10mmHg"] = hgo_quarter_tube(50, 200)
     # The shipped examples as they are, and the angioplasty balloon made softer.
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "..", "examples")

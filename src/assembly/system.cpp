@@ -8,6 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "model/meridian_curvature.hpp"
 #include "model/surface_curvature.hpp"
 
 namespace tunica {
@@ -81,6 +82,9 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
       }
     if (hi(0) >= lo(0)) extent_[p] = (hi - lo).norm();
     std::vector<std::vector<double>> curvature = element_mean_curvature(model, part);
+    std::vector<std::vector<double>> meridian = meridian_mean_curvature(model, part);
+    for (std::size_t b = 0; b < curvature.size(); ++b)
+      if (!meridian[b].empty()) curvature[b] = std::move(meridian[b]);
     int first = 0;
     for (const auto& block : part.blocks) {
       const ElementType& type = element_type(block.kind);

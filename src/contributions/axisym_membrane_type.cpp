@@ -9,6 +9,7 @@
 #include "contributions/kinematics.hpp"
 #include "elements/axisym_membrane.hpp"
 #include "elements/axisym_membrane_inverse.hpp"
+#include "elements/axisym_start_tension.hpp"
 #include "loads/axisym_pressure.hpp"
 
 namespace tunica {
@@ -16,11 +17,13 @@ namespace tunica {
 namespace {
 
 struct AxisymMembraneKernel : PlaneKinematics<2> {
-  static constexpr bool kPressure = true, kStartStiffness = false, kSolid = false;
+  static constexpr bool kPressure = true, kStartStiffness = true, kSolid = false;
   using Vector = Eigen::Vector4d;
   using Matrix = Eigen::Matrix4d;
   const Part& part;
-  explicit AxisymMembraneKernel(const BlockContext& ctx) : part(ctx.part) {}
+  const Model& model;
+  const ElementBlock& block;
+  explicit AxisymMembraneKernel(const BlockContext& ctx) : part(ctx.part), model(ctx.model), block(ctx.block) {}
 
   void internal(int, const State& s, Vector& f, Matrix* K) const {
     axisym_membrane(s.X, s.x, part.thickness, *part.material, f, K);
@@ -39,6 +42,10 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
       (*grad)(3) = std::numbers::pi * q;
     }
     return std::numbers::pi * dz * q;
+  }
+  void start(int e, double T0, Matrix& K) const {
+    const int* en = block.element(e);
+    axisym_normal_tension_stiffness(model.X[en[0]].head<2>(), model.X[en[1]].head<2>(), T0, K);
   }
   void inverse(int, const State& s, const Vector& ue, Vector& f, Matrix* K) const {
     axisym_membrane_inverse(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f, K);

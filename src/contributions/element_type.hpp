@@ -46,7 +46,7 @@ struct BlockContext {
   const ElementBlock& block;
   int first_element = 0;        ///< index within the part of the block's first element
   BlockLayout layout;
-  std::vector<double> curvature;  ///< 3-D membranes: per element, the mean curvature H_e (model/surface_curvature.hpp)
+  std::vector<double> curvature;  ///< membranes: per element, the mean curvature H_e (model/surface_curvature.hpp, meridian_curvature.hpp)
 };
 
 /// The contributions of one block of elements to R, K and the outputs. Element DOFs are

@@ -95,7 +95,7 @@ const ComponentSpec& solver_settings_spec() {
          with_default(one_of(text("stress_free_start",
                                   "first correction of an increment that starts at the stress-free reference state "
                                   "under pressure or volume control: stiffened = its tangent gets the normal-tension "
-                                  "stiffness of the Laplace estimate T0 = |p|/|H| on every pressurized 3-D membrane "
+                                  "stiffness of the Laplace estimate T0 = |p|/|H| on every pressurized membrane "
                                   "element, p under volume control the pressure the stiffened correction finds (the "
                                   "Newton direction changes, not the solution); exact = the plain tangent"),
                              {"stiffened", "exact"}),

@@ -54,7 +54,7 @@ std::optional<FirstCorrection> VolumeStartStiffness::take(
     if (!std::isfinite(pressure)) return std::nullopt;
     if (solve > 0 && std::abs(pressure - estimate) <= 0.1 * std::abs(pressure)) break;  // p̂ settled
     if (solve == 0) {
-      // No K₀ at that pressure (no pressurized 3-D membrane): the plain correction is Newton's own.
+      // No K₀ at that pressure (no pressurized membrane): the plain correction is Newton's own.
       LoadState at = inner.loads();
       at.pressure[problem_.load()] = pressure;
       TangentMatrix probe = K;

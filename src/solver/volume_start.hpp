@@ -21,8 +21,8 @@ public:
   VolumeStartStiffness(BorderedProblem& problem, const Eigen::VectorXd& converged, const SolverSettings& settings)
       : problem_(problem), un_(converged), settings_(settings) {}
   /// Declines (Newton starts plainly) where Newton's iteration 0 would end the increment (the
-  /// target volume already holds), where no pressurized 3-D membrane gives K₀ (axisymmetric
-  /// models), or where the start is inadmissible or its bordered matrix singular.
+  /// target volume already holds), where no pressurized membrane gives K₀ (a model of shells
+  /// or solids alone), or where the start is inadmissible or its bordered matrix singular.
   std::optional<FirstCorrection> take(LinearSolver& solver,
                                       const std::function<void(const IterationRecord&)>& on_iteration) override;
 

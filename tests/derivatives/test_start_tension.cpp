@@ -16,8 +16,10 @@
 #include "../support/six_node_triangle.hpp"
 #include "../support/sphere_octant.hpp"
 #include "assembly/system.hpp"
+#include "elements/axisym_start_tension.hpp"
 #include "elements/start_tension.hpp"
 #include "io/deck.hpp"
+#include "model/meridian_curvature.hpp"
 
 using namespace tunica;
 
@@ -198,4 +200,75 @@ TEST(StartTension, SystemVectorIsTheGradientOfTheQuadraticWhoseHessianItAdds) {
   TangentMatrix K0 = system.tangent(true);
   EXPECT_EQ(system.add_start_stiffness(loads, d, K0).norm(), 0.0);
   EXPECT_EQ(K0.max_abs(), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The axisymmetric segment (elements/axisym_start_tension.hpp) and the meridian's mean curvature
+// (model/meridian_curvature.hpp) that sets its tension.
+
+TEST(StartTension, AxisymSegmentResistsOnlyTheRelativeNormalMotionOfItsNodes) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.2, 3.0), a(-3.2, 3.2);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Vector2d Xa(u(rng), u(rng) - 1.5);
+    const double phi = a(rng), length = 0.1 + 0.3 * u(rng);
+    Eigen::Vector2d Xb = Xa + length * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    if (Xb(0) <= 0) Xb(0) = 0.05;  // on the right of the axis
+    const double L = (Xb - Xa).norm();
+    const Eigen::Vector2d tt = (Xb - Xa) / L, nn(tt(1), -tt(0));
+    const double T0 = 0.3;
+    Eigen::Matrix4d K;
+    axisym_normal_tension_stiffness(Xa, Xb, T0, K);
+    EXPECT_LT((K - K.transpose()).norm(), 1e-15 * K.norm());
+    const auto energy = [&](const Eigen::Vector2d& ua, const Eigen::Vector2d& ub) {
+      Eigen::Vector4d d;
+      d << ua, ub;
+      return d.dot(K * d);
+    };
+    // Tangential motion and a uniform normal motion: nothing.
+    EXPECT_NEAR(energy(0.7 * tt, 0.7 * tt), 0.0, 1e-14 * K.norm());
+    EXPECT_NEAR(energy(0.7 * nn, 0.7 * nn), 0.0, 1e-14 * K.norm());
+    EXPECT_NEAR(energy(0.3 * tt, -0.5 * tt), 0.0, 1e-14 * K.norm());
+    // A relative normal motion δ: dᵀK₀d = T₀ ∫(∂w/∂s)² dA₀ = T₀ (δ/L)² 2π R_mid L.
+    const double delta = 0.01, r_mid = 0.5 * (Xa(0) + Xb(0));
+    EXPECT_NEAR(energy(Eigen::Vector2d::Zero(), delta * nn), T0 * delta * delta / L * 2 * M_PI * r_mid,
+                1e-12 * T0 * delta * delta / L * 2 * M_PI * r_mid);
+  }
+}
+
+namespace {
+
+Model meridian(const std::string& mesh) {
+  return read_deck_text(R"(title: meridian
+units: {length: mm, force: N}
+materials:
+  m: {type: neo_hookean, mu: 1 kPa}
+parts:
+  wall:
+    element: axisymmetric_membrane
+    material: m
+    thickness: 0.1 mm
+    mesh: )" + mesh + R"(
+boundary:
+  fix: {node_set: wall.start, dofs: [r, z]}
+steps:
+  - {name: s, increments: 1, set: {}}
+)",
+                        "meridian.yaml");
+}
+
+}  // namespace
+
+TEST(StartTension, MeridianMeanCurvatureIsOneOverRadiusOnASphereAndHalfOnATube) {
+  for (const char* sense : {"start_angle: -90 deg, end_angle: 90 deg", "start_angle: 90 deg, end_angle: -90 deg"}) {
+    const Model m =
+        meridian(std::string("{type: arc, center: [0 mm, 0 mm], radius: 4 mm, ") + sense + ", elements: 60}");
+    const std::vector<double> H = meridian_mean_curvature(m, m.parts[0])[0];
+    ASSERT_EQ(H.size(), 60u);
+    for (std::size_t e = 0; e < H.size(); ++e) EXPECT_NEAR(std::abs(H[e]), 0.25, 2e-3) << sense << " element " << e;
+  }
+  const Model tube = meridian("{type: line, from: [3 mm, 0 mm], to: [3 mm, 6 mm], elements: 12}");
+  const std::vector<std::vector<double>> H = meridian_mean_curvature(tube, tube.parts[0]);
+  ASSERT_EQ(H[0].size(), 12u);
+  for (double h : H[0]) EXPECT_NEAR(std::abs(h), 1.0 / 6.0, 1e-14);
 }

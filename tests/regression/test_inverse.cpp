@@ -156,7 +156,9 @@ TEST(InverseStep, SphereImagedUnderPressureAgreesWithTheClosedFormAsTheForwardDo
                 inv.max_iterations);
     EXPECT_NEAR(Rh, 1.0, 1e-9) << elements;
     EXPECT_LT(err, 2e-3) << elements;
-    if (previous > 0) EXPECT_GT(std::log2(previous / err), 1.8) << elements;
+    if (previous > 0) {
+      EXPECT_GT(std::log2(previous / err), 1.8) << elements;
+    }
     previous = err;
   }
 }
