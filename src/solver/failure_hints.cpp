@@ -211,6 +211,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   if (!limit.empty()) return limit;
   if (still_converging) add(more_iterations);
   else hints += rising;
+  // No other evidence, and no increment converged from the stress-free reference (the first step):
+  // an unstressed membrane resists motion out of its surface only through its curvature.
+  if (hints.empty() && &step == &model.steps.front() && converged.count() == 1)
+    add(step.solver.stiffen_stress_free_start
+            ? "no increment converged from the stress-free reference state, where an unstressed membrane resists "
+              "motion out of its surface only through its curvature. Apply a little pressure together with a "
+              "stretch in the first step (e.g. 10 mmHg in its `set`), or a small pressure step before a "
+              "volume-controlled one; take more `increments` in this step; and look at newton.csv: if the "
+              "residual was still falling at the last iteration, raise `max_iterations` in `solver`."
+            : "no increment converged from the stress-free reference state with the plain first correction the "
+              "step asks for (`stress_free_start: exact` in its `solver`): leave it out, and the default "
+              "`stiffened` start resists the uneven normal motion an unstressed membrane does not (theory manual "
+              "§7.2).");
   return hints;
 }
 

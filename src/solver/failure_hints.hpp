@@ -33,7 +33,10 @@ namespace tunica {
 ///    and the absolute residual ‖R‖ falling over the last two iterations and below 1e-3 of the
 ///    forces that cancel in it): raise `max_iterations`;
 ///  - else a curve that flattened short of its predicted maximum: the pressure still rises there,
-///    and the failure is likely a local one, which volume control need not pass.
+///    and the failure is likely a local one, which volume control need not pass;
+///  - else, when no increment of the first step converged (from the stress-free reference): a
+///    little pressure with a stretch, a pressure step before volume control, more increments or
+///    iterations; or, where the step asks for the plain start, the default stiffened one.
 /// `converged`: the step's start and its converged increments' states (also those before a
 /// restart); `attempted`: the loads of the failed increment.
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,

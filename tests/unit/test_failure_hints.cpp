@@ -391,3 +391,22 @@ TEST(FailureHints, AnInverseStepThatStopsPointsToTheImagedMesh) {
   EXPECT_NE(h.find("user guide §3.5"), std::string::npos) << h;
   EXPECT_EQ(failure_hints(m, raising(0.01), failed("stagnating", 0.07), linear, trying(0.002)), "");
 }
+
+TEST(FailureHints, NoIncrementFromTheStressFreeStateSuggestsALittlePressureOrTheStiffenedStart) {
+  Model m = one_load_model();
+  m.steps.push_back(raising(10));
+  const StepTrace at_rest = along({{0, 1}});
+  const std::string h = failure_hints(m, m.steps.front(), failed("diverging", 1), at_rest, trying(2.5));
+  EXPECT_NE(h.find("no increment converged from the stress-free reference state"), std::string::npos) << h;
+  EXPECT_NE(h.find("a little pressure"), std::string::npos) << h;
+  EXPECT_NE(h.find("`increments`"), std::string::npos) << h;
+  // With the plain start asked for: leave it out.
+  m.steps.front().solver.stiffen_stress_free_start = false;
+  const std::string plain = failure_hints(m, m.steps.front(), failed("diverging", 1), at_rest, trying(2.5));
+  EXPECT_NE(plain.find("`stress_free_start: exact`"), std::string::npos) << plain;
+  // Not once an increment of the step converged, nor in a later step.
+  m.steps.front().solver.stiffen_stress_free_start = true;
+  EXPECT_EQ(failure_hints(m, m.steps.front(), failed("diverging", 1), along({{0, 1}, {1, 1.1}}), trying(2.5)), "");
+  m.steps.push_back(raising(20));
+  EXPECT_EQ(failure_hints(m, m.steps.back(), failed("diverging", 1), at_rest, trying(12)), "");
+}

@@ -321,6 +321,7 @@ TEST(BoundedFile, DevicesAndOversizedFilesAreRefusedAtOnce) {
   InputError e = input_error([&] { read_file_bounded("/dev/zero", 1u << 20, "deck"); });
   EXPECT_TRUE(contains(e.reason(), "not a regular file")) << e.what();
   const std::string fifo = (test::scratch("msh-reader") / "fifo").string();
+  std::filesystem::remove(fifo);  // an earlier process of the same pid may have left one
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   e = input_error([&] { read_file_bounded(fifo, 1u << 20, "deck"); });
   EXPECT_TRUE(contains(e.reason(), "not a regular file")) << e.what();
