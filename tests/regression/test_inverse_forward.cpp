@@ -9,9 +9,9 @@
 //    separates them.
 //  - A forward step back to zero load (and to zero prescribed displacement) lands on X itself.
 //  - A restart past the inverse step continues on the reference it computed (restart.txt records
-//    it as `reference_shift`), to the same results bit for bit; a restart file past an inverse
-//    step without it is refused naming the key; a completed inverse-only run continues with a
-//    forward step added to the deck.
+//    it as `reference_shift`), to the same results bit for bit, in process and through `tunica run
+//    --restart`; a restart file past an inverse step without it is refused naming the key; a
+//    completed inverse-only run continues with a forward step added to the deck.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -328,4 +328,29 @@ TEST(InverseThenForward, RatAortaExampleLoadsItsZeroPressureTubeAsTheForwardRunD
                 step, mmhg, r, expected, r - expected);
     EXPECT_NEAR(r, expected, 1e-9 * expected) << step;
   }
+}
+
+TEST(InverseThenForward, TunicaRunRestartedPastTheInverseStepEndsAsTheWholeRun) {
+  // Through the command line: the example run to its end, restarted with a step added that unloads
+  // the tube (lumen and axial displacement back to 0 on the zero-pressure reference), ends with the
+  // history.csv of the whole deck run at once, bit for bit, on the load-free tube R = 0.763 mm over 1 mm.
+  const std::string example = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inverse.yaml";
+  const std::filesystem::path dir = scratch("inverse-forward", "cli");
+  const std::string deck = (dir / "deck.yaml").string(), longer = (dir / "longer.yaml").string();
+  std::ofstream(deck) << read_text(example);
+  std::ofstream(longer) << replace(read_text(example), "    set: {lumen: 80 mmHg}\n",
+                                   "    set: {lumen: 80 mmHg}\n  - {name: unload, increments: 8, set: {lumen: 0 mmHg, stretch: 0 mm}}\n");
+  const auto tunica = [](const std::string& args) {
+    return std::system((std::string(TUNICA_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
+  };
+  ASSERT_EQ(tunica("run " + deck + " -q -o " + (dir / "a").string()), 0);
+  // The restart takes the longer deck in the first run's folder (its added step not yet reached).
+  std::filesystem::copy_file(longer, deck, std::filesystem::copy_options::overwrite_existing);
+  ASSERT_EQ(tunica("run " + deck + " -q --restart " + (dir / "a").string()), 0);
+  ASSERT_EQ(tunica("run " + deck + " -q -o " + (dir / "b").string()), 0);
+  const std::string resumed = read_text((dir / "a" / "history.csv").string());
+  EXPECT_EQ(resumed, read_text((dir / "b" / "history.csv").string()));
+  const std::string last = resumed.substr(resumed.rfind('\n', resumed.size() - 2) + 1);
+  std::printf("examples/rat-aorta-inverse.yaml restarted with an unloading step: last row %s", last.c_str());
+  EXPECT_EQ(last.rfind("4,8,4,0,0.763", 0), 0u) << last;
 }
