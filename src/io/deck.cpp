@@ -128,7 +128,9 @@ const ComponentSpec& step_spec() {
                                 "blood pressure), and the step solves for the zero-pressure reference geometry that "
                                 "the loads deform into it (theory manual §13); positions, displacements and frames "
                                 "of the step are of that reference geometry, stresses and stretches of the imaged "
-                                "state; a part's `thickness` is the reference thickness"),
+                                "state; a part's `thickness` is the reference thickness. The steps after it are forward steps "
+                                "on the reference it computed, starting from the imaged state at the loads it reached "
+                                "(their displacements are from that reference)"),
                            {"forward", "inverse"}),
                     "forward"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
@@ -619,7 +621,6 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       if (!(s.volume_control.target > 0)) vc["volume"].fail("the target volume must be positive");
     }
     if (s.inverse) check_inverse_step(node, m, s);
-    else check_after_inverse_step(node, m);
     m.steps.push_back(std::move(s));
   }
 }

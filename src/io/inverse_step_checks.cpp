@@ -8,6 +8,12 @@ namespace tunica {
 
 void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) {
   const DeckNode type = node["type"];
+  if (!m.steps.empty() && m.steps.front().inverse)
+    type.fail(fmt::format("a deck takes one inverse step, and step '{}' is one already: the steps after it are "
+                          "forward steps on the zero-pressure reference it computes (`type: forward`, the default); "
+                          "the imaged geometry of a second inverse step would have to be a configuration of that "
+                          "reference, which the deck's geometry is not",
+                          m.steps.front().name));
   if (!m.steps.empty())
     type.fail(fmt::format("an inverse step must be the first step: the deck's geometry is the imaged (loaded) "
                           "configuration it starts from, and step '{}' comes before it",
@@ -34,18 +40,6 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
     (node.has("solver") && node["solver"].has("linear_solver") ? node["solver"]["linear_solver"] : type)
         .fail("the tangent of an inverse step is not symmetric, and cholmod takes symmetric tangents only: use "
               "`linear_solver: auto` (UMFPACK for it) or umfpack");
-}
-
-void check_after_inverse_step(const DeckNode& node, const Model& m) {
-  if (!m.steps.empty() && m.steps.front().inverse)
-    node.fail(fmt::format(
-        "a step after the inverse step '{}' is not supported yet: the zero-pressure geometry it computes is written "
-        "to the output folder, {}",
-        m.steps.front().name,
-        m.geometry == Geometry::axisymmetric
-            ? "reference_" + m.steps.front().name + ".csv (node, R, Z: a meridian to fit a deck of its own's `line` or `arc` to)"
-            : "reference_" + m.steps.front().name + ".msh (a Gmsh mesh that a deck of its own can start from: "
-                                                    "`mesh: {type: gmsh, file: ..., surface: <part>}`)"));
 }
 
 }  // namespace tunica

@@ -280,8 +280,10 @@ struct Model {
   /// Per node: its reference unit meridian tangent X′ = (R′, Z′) (shell nodes; zero elsewhere).
   std::vector<Eigen::Vector2d> slope_ref;
   int num_slope_nodes = 0;
-  std::map<std::string, std::unique_ptr<MembraneMaterial>> materials;
-  std::map<std::string, std::unique_ptr<SolidMaterial>> solid_materials;  ///< same `materials` section, solid types
+  /// Shared, so that a copy of the model (the reference an inverse step computes,
+  /// Analysis::adopt_reference) keeps the parts' material pointers valid; never changed after reading.
+  std::map<std::string, std::shared_ptr<MembraneMaterial>> materials;
+  std::map<std::string, std::shared_ptr<SolidMaterial>> solid_materials;  ///< same `materials` section, solid types
   std::vector<Part> parts;
   std::vector<NodeSet> node_sets;
   /// Node sets a mesh generator makes for other parameters but not for these, by full name

@@ -13,7 +13,8 @@ namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 5";
+constexpr const char* kMagic = "tunica-restart 6";
+constexpr const char* kMagicWithoutReference = "tunica-restart 5";
 constexpr const char* kMagicWithoutTrace = "tunica-restart 4";
 constexpr const char* kMagicWithoutFingerprint = "tunica-restart 3";
 constexpr long kMaxFingerprint = 1'000'000;
@@ -147,6 +148,9 @@ std::string restart_text(const RestartRecord& r) {
   put(s, "trace_pressure", trace_pressure);
   put(s, "trace_volume", trace_volume);
   put(s, "u", std::vector<double>(c.u.data(), c.u.data() + c.u.size()));
+  // After an inverse step, the reference it computed, as its shift from the deck's positions.
+  put(s, "reference_shift",
+      std::vector<double>(c.reference_shift.data(), c.reference_shift.data() + c.reference_shift.size()));
   return s + fmt::format("checksum {:08x}\n", crc32_of(s));
 }
 
@@ -154,14 +158,17 @@ RestartRecord read_restart(const std::string& path) {
   const std::string text = read_file_bounded(path, kMaxRestartBytes, "restart file");
   Reader in(path, text);
   RestartRecord r;
-  bool has_trace = false;
+  bool has_trace = false, has_reference = false;
   {
     const std::string first = text.substr(0, text.find('\n'));
     r.has_fingerprint = first != kMagicWithoutFingerprint;
-    has_trace = first == kMagic;
-    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutTrace && r.has_fingerprint)
+    has_reference = first == kMagic;
+    has_trace = has_reference || first == kMagicWithoutReference;
+    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutReference &&
+        first != kMagicWithoutTrace && r.has_fingerprint)
       in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic +
-              "', '" + kMagicWithoutTrace + "' and '" + kMagicWithoutFingerprint + "')");
+              "', '" + kMagicWithoutReference + "', '" + kMagicWithoutTrace + "' and '" + kMagicWithoutFingerprint +
+              "')");
     if (first.rfind("tunica-restart ", 0) != 0) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
   }
   in.line("tunica-restart");
@@ -222,6 +229,10 @@ RestartRecord read_restart(const std::string& path) {
   }
   const auto u = in.vector("u");
   c.u = Eigen::Map<const Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
+  if (has_reference) {
+    const auto shift = in.vector("reference_shift");
+    c.reference_shift = Eigen::Map<const Eigen::VectorXd>(shift.data(), static_cast<Eigen::Index>(shift.size()));
+  }
   if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");
   // Last: the CRC-32 of every byte before this line. A restart file edited by hand or damaged
   // in a way that still parses is refused here.

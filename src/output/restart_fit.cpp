@@ -110,6 +110,25 @@ std::string check_restart_fits(const Model& m, const RestartRecord& r, const std
                                                   changes.size() == 1 ? "s" : "", listed(first_of_each_section(changes), 6, " section(s)")),
                     m.deck_file, r.deck, folder));
 
+  // Past an inverse step (theory manual (13.10)) the state is a displacement from the reference that
+  // step computed, which the restart file records as `reference_shift`: without it the run would
+  // continue on the deck's imaged positions as its reference.
+  const bool past_inverse = !m.steps.empty() && m.steps.front().inverse && c.step > 0;
+  if (past_inverse && c.reference_shift.size() != m.num_dofs())
+    throw InputError(
+        {file, 0, 0, ""},
+        fmt::format("the run in {} is past the inverse step '{}', and its restart file records {} `reference_shift` "
+                    "value(s) where this deck has {} DOFs: the zero-pressure reference the later steps continue from "
+                    "is not known, and continuing on the deck's imaged geometry as the reference would be wrong. Run "
+                    "the deck again from the start (`tunica run {} -o <new folder>`).",
+                    folder, m.steps.front().name, c.reference_shift.size(), m.num_dofs(), m.deck_file));
+  if (!past_inverse && c.reference_shift.size() > 0)
+    throw InputError({file, 0, 0, ""},
+                     fmt::format("the run in {} records a `reference_shift` (a reference computed by an inverse step), "
+                                 "but this deck's step {} is not after an inverse step: it is another deck's run. Run "
+                                 "this deck in a fresh output folder (`tunica run {} -o <new folder>`).",
+                                 folder, c.step + 1, m.deck_file));
+
   // Every step done: a restart has nothing to run, unless the deck adds a step.
   if (c.step >= static_cast<int>(m.steps.size()) || (c.step == static_cast<int>(m.steps.size()) - 1 && c.fraction >= 1.0)) {
     const std::size_t last = std::min(static_cast<std::size_t>(c.step), m.steps.size() - 1);

@@ -7,10 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace tunica {
 
-Analysis::Analysis(const Model& model) : model_(model), system_(model) {
+Analysis::Analysis(const Model& model)
+    : deck_model_(model), model_(&model), system_(std::make_unique<System>(model)) {
   state_.u.setZero(model.num_dofs());
   state_.loads.boundary.assign(model.boundaries.size(), 0.0);
   state_.loads.pressure.assign(model.loads.size(), 0.0);
@@ -21,39 +23,77 @@ Analysis::Analysis(const Model& model) : model_(model), system_(model) {
     orientation_volume_.push_back(volume_sign_is_orientation(model, l));
 }
 
+Analysis::~Analysis() = default;
+
+void Analysis::adopt_reference(const Eigen::VectorXd& shift) {
+  if (shift.size() != deck_model_.num_dofs())
+    throw std::invalid_argument(fmt::format("a reference shift of {} values for a model of {} DOFs", shift.size(),
+                                            deck_model_.num_dofs()));
+  // The element blocks keep reference data of their own (System), so the system is rebuilt on
+  // the new reference rather than the positions moved under it.
+  auto m = std::make_unique<Model>(deck_model_);
+  for (int n = 0; n < m->num_nodes(); ++n)
+    for (int d = 0; d < m->dofs_per_node(); ++d) m->X[n](d) += shift(m->node_dof(n, d));
+  system_.reset();
+  own_model_ = std::move(m);
+  model_ = own_model_.get();
+  system_ = std::make_unique<System>(*model_);
+  orientation_volume_.clear();
+  for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l)
+    orientation_volume_.push_back(volume_sign_is_orientation(*model_, l));
+}
+
+void Analysis::leave_inverse_step() {
+  // The inverse step's unknowns are the reference's shift from the imaged positions, X = x̂ + u
+  // (13.1). On the reference X the imaged state x̂ is the displacement x̂ − X = −u, in equilibrium
+  // with the loads at their imaged values, which the next step starts from (13.10).
+  state_.reference_shift = state_.u;
+  adopt_reference(state_.reference_shift);
+  state_.u = -state_.reference_shift;
+  // A prescribed value b of the inverse step held X = x̂ + b: the same DOF has the displacement −b
+  // on the new reference, and later steps ramp it from there.
+  for (double& b : state_.loads.boundary) b = -b;
+  // The loads are the next step's starting values: the forward problem's (System::inverse).
+  state_.loads.step = state_.step + 1;
+  update_volumes();
+  update_reactions();
+}
+
 std::string Analysis::eversion(const Eigen::VectorXd& u, int& load) const {
-  for (int l = 0; l < static_cast<int>(model_.loads.size()); ++l) {
+  for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l) {
     if (!orientation_volume_[l] || l >= static_cast<int>(state_.loads.volume.size())) continue;
-    const double before = state_.loads.volume[l], now = system_.volume(u, l);
+    const double before = state_.loads.volume[l], now = system_->volume(u, l);
     if (!(before * now < 0)) continue;
     load = l;
-    const PressureLoad& p = model_.loads[l];
-    const std::string unit = model_.units.display_unit(Dimension::volume);
+    const PressureLoad& p = model_->loads[l];
+    const std::string unit = model_->units.display_unit(Dimension::volume);
     return fmt::format(
         "the converged state is inadmissible: the enclosed volume of load '{}' changed sign, from {:.4g} {} to {:.4g} {}, "
         "so part '{}' passed through itself (or through its mirror image at a symmetry plane) and is turned inside "
         "out, a state its strains cannot tell from the right one",
-        p.name, before, unit, now, unit, model_.parts[p.part].name);
+        p.name, before, unit, now, unit, model_->parts[p.part].name);
   }
   return "";
 }
 
 void Analysis::update_volumes() {
-  state_.loads.volume.resize(model_.loads.size());
-  for (std::size_t l = 0; l < model_.loads.size(); ++l)
-    state_.loads.volume[l] = system_.volume(state_.u, static_cast<int>(l));
+  state_.loads.volume.resize(model_->loads.size());
+  for (std::size_t l = 0; l < model_->loads.size(); ++l)
+    state_.loads.volume[l] = system_->volume(state_.u, static_cast<int>(l));
 }
 
 void Analysis::update_reactions() {
   Eigen::VectorXd R;
-  system_.assemble(state_.u, state_.loads, R, nullptr);
-  reactions_.setZero(model_.num_dofs());
-  for (int d : system_.prescribed_dofs()) reactions_(d) = R(d);
+  system_->assemble(state_.u, state_.loads, R, nullptr);
+  reactions_.setZero(model_->num_dofs());
+  for (int d : system_->prescribed_dofs()) reactions_(d) = R(d);
 }
 
 void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
   if (resume) {
     state_ = *resume;
+    // Past an inverse step: the reference it computed (the restart file records it).
+    if (state_.reference_shift.size() > 0) adopt_reference(state_.reference_shift);
     // Which parts are active follows from the step (restart files do not store it).
     state_.loads.step = state_.step_start.step = state_.step;
     update_reactions();
@@ -61,8 +101,11 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     update_reactions();
     observer.on_increment(*this, IncrementInfo{});
   }
-  for (; state_.step < static_cast<int>(model_.steps.size()); ++state_.step) {
+  for (; state_.step < static_cast<int>(model_->steps.size()); ++state_.step) {
     run_step(observer);
+    // An inverse step that is the last step keeps its own state (u = X − x̂ on the deck's positions).
+    if (model_->steps[state_.step].inverse && state_.step + 1 < static_cast<int>(model_->steps.size()))
+      leave_inverse_step();
     state_.step_start = state_.loads;
     state_.fraction = 0;
     state_.dt = 0;
@@ -74,14 +117,14 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
 
 void Analysis::run_step(AnalysisObserver& observer) {
   const int s = state_.step;
-  const Step& step = model_.steps[s];
+  const Step& step = model_->steps[s];
   // Each amplitude ramps from its value at the start of the step to the step's target.
   const LoadState start = state_.step_start;
   LoadState end = start;
-  for (std::size_t k = 0; k < model_.boundaries.size(); ++k)
-    if (auto it = step.targets.find(model_.boundaries[k].name); it != step.targets.end()) end.boundary[k] = it->second;
-  for (std::size_t k = 0; k < model_.loads.size(); ++k)
-    if (auto it = step.targets.find(model_.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
+  for (std::size_t k = 0; k < model_->boundaries.size(); ++k)
+    if (auto it = step.targets.find(model_->boundaries[k].name); it != step.targets.end()) end.boundary[k] = it->second;
+  for (std::size_t k = 0; k < model_->loads.size(); ++k)
+    if (auto it = step.targets.find(model_->loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
   const auto at = [&](double t) {
     LoadState l = start;
     l.step = s;
@@ -127,8 +170,8 @@ void Analysis::run_step(AnalysisObserver& observer) {
         constraint = {vc.load, volume_at(info.fraction)};
       }
       Eigen::VectorXd u = state_.u;
-      system_.apply_boundary(trial, u);
-      NewtonResult r = solve_increment(system_, *solver, trial, u, settings,
+      system_->apply_boundary(trial, u);
+      NewtonResult r = solve_increment(*system_, *solver, trial, u, settings,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
                                     vc.load >= 0 ? &constraint : nullptr, &state_.u);
       // A converged state whose enclosed volume changed sign is rejected like any inadmissible
@@ -165,9 +208,9 @@ void Analysis::run_step(AnalysisObserver& observer) {
             "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
             "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
             info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
-            (everted_load >= 0 ? eversion_hint(model_, everted_load)
-                               : failure_hints(model_, step, r, state_.trace, trial)) +
-                contact_resolution_hints(system_, state_.u, s)));
+            (everted_load >= 0 ? eversion_hint(*model_, everted_load)
+                               : failure_hints(*model_, step, r, state_.trace, trial)) +
+                contact_resolution_hints(*system_, state_.u, s)));
       }
       observer.on_cutback(info, why);
       ++cutbacks;

@@ -6,6 +6,14 @@
 // the increment size grows back after two converged reduced increments.
 // The whole progress state is a Checkpoint, so that a run can be resumed
 // exactly where a converged increment left it.
+//
+// After an inverse step (Step::inverse, the first step; theory manual §13, (13.10)) the model's
+// reference becomes the computed zero-pressure geometry X = x̂ + u and the state the displacement
+// x̂ − X from it, at the inverse step's loads: the steps after it are ordinary forward steps on the
+// new reference (Analysis::model() is then a copy of the deck's model with the new X, and
+// system() is built on it). The checkpoint records the shift X − x̂ (Checkpoint::reference_shift),
+// so that a run resumed past the inverse step continues on the same reference. An inverse step
+// that is the deck's last step keeps its own state (u = X − x̂ on the deck's positions).
 #include <functional>
 #include <memory>
 #include <string>
@@ -38,6 +46,9 @@ struct Checkpoint {
   LoadState loads;           ///< current amplitudes
   Eigen::VectorXd u;         ///< current displacements
   StepTrace trace;           ///< the step's converged states that the hints of a failure read
+  /// After an inverse step: the shift of the reference it computed, X − x̂ (all DOFs; x̂ the deck's
+  /// positions), which the model's reference has taken on (Analysis::model()); empty before.
+  Eigen::VectorXd reference_shift;
 };
 
 class Analysis;
@@ -65,13 +76,16 @@ public:
 class Analysis {
 public:
   explicit Analysis(const Model& model);
+  ~Analysis();
   /// Runs every step, from the reference state or from `resume`. Throws SolveError
   /// when an increment cannot converge and Interrupted when the observer asks to
   /// stop; every converged increment has been reported before.
   void run(AnalysisObserver& observer, const Checkpoint* resume = nullptr);
 
-  const Model& model() const { return model_; }
-  const System& system() const { return system_; }
+  /// The model the state refers to: the deck's, or after an inverse step its copy with the
+  /// reference that step computed (Checkpoint::reference_shift).
+  const Model& model() const { return *model_; }
+  const System& system() const { return *system_; }
   const Eigen::VectorXd& displacement() const { return state_.u; }
   const LoadState& loads() const { return state_.loads; }
   /// Reaction forces: R = f_int − f_ext at prescribed DOFs (0 elsewhere), at the last converged state.
@@ -94,9 +108,18 @@ private:
   /// volume_sign_is_orientation) has the other sign than at the last converged state, so the
   /// surface passed through itself. `load` receives that load.
   std::string eversion(const Eigen::VectorXd& u, int& load) const;
+  /// Makes the model's reference the deck's positions shifted by `shift` (X = x̂ + shift, all DOFs):
+  /// model() becomes a copy of the deck's model with that X and system() is rebuilt on it.
+  void adopt_reference(const Eigen::VectorXd& shift);
+  /// The end of inverse step `s`: the reference becomes the computed X (adopt_reference), the
+  /// state u = x̂ − X and the prescribed values the same displacements on the new reference,
+  /// at the step's loads (theory manual (13.10)).
+  void leave_inverse_step();
 
-  const Model& model_;
-  System system_;
+  const Model& deck_model_;
+  const Model* model_;            ///< deck_model_, or own_model_ after an inverse step
+  std::unique_ptr<Model> own_model_;
+  std::unique_ptr<System> system_;
   Checkpoint state_;
   Eigen::VectorXd reactions_;
   std::vector<char> orientation_volume_;  ///< per load: volume_sign_is_orientation

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -262,9 +263,11 @@ TEST(InverseStep, RatAortaInverseExampleGivesTheLoadFreeTube) {
   Capture cap;
   Analysis a(m);
   a.run(cap);
-  const Row& last = cap.rows.back();
-  const double R = last.values[Capture::column(m, "reference_radius_mm")];
-  const double Z = last.values[Capture::column(m, "reference_end_z_mm")];
+  // The end of its inverse step (the steps after it: InverseThenForward, test_inverse_forward.cpp).
+  const Row& last = *std::find_if(cap.rows.begin(), cap.rows.end(),
+                                  [](const Row& r) { return r.info.step == 1 && r.info.fraction >= 1.0 - 1e-12; });
+  const double R = last.values[Capture::column(m, "radius_mm")];
+  const double Z = last.values[Capture::column(m, "end_z_mm")];
   const double lz = last.values[Capture::column(m, "lambda_z")];
   std::printf("examples/rat-aorta-inverse.yaml: R = %.12f mm, reference length %.12f mm, λz = %.10f, %d cut-backs\n", R,
               Z, lz, cap.cutbacks);

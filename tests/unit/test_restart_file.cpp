@@ -1,6 +1,7 @@
 // restart.txt keeps the step's converged states that the hints of a failure read (their
 // pressures and volumes, solver/step_trace.hpp), reads them back, refuses a trace that cannot be
-// one, and still reads the files of format 4, written before it kept them.
+// one, and still reads the files of format 4, written before it kept them, and of format 5, written
+// before it recorded the reference an inverse step computed (Checkpoint::reference_shift).
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -78,10 +79,30 @@ TEST(RestartFile, AFileOfFormat4IsReadWithoutATrace) {
   // What Tunica wrote before it kept the trace: the run continues, its hints start afresh.
   std::string text = restart_text(record(7));
   text = text.substr(0, text.rfind("checksum "));
-  text = test::replace(text, "tunica-restart 5\n", "tunica-restart 4\n");
+  text = test::replace(text, "tunica-restart 6\n", "tunica-restart 4\n");
   const std::size_t from = text.find("trace "), to = text.find("\nu ") + 1;
   text.erase(from, to - from);
+  text.erase(text.find("reference_shift "));
   const RestartRecord r = read_restart(write("format4.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
   EXPECT_EQ(r.checkpoint.trace.count(), 0);
   EXPECT_EQ(r.checkpoint.loads.pressure, std::vector<double>{1.0});
+}
+
+TEST(RestartFile, AFileOfFormat5IsReadWithoutAReferenceShift) {
+  // What Tunica wrote before steps could follow an inverse step: no reference of its own.
+  std::string text = restart_text(record(7));
+  text = text.substr(0, text.rfind("checksum "));
+  text = test::replace(text, "tunica-restart 6\n", "tunica-restart 5\n");
+  text.erase(text.find("reference_shift "));
+  const RestartRecord r = read_restart(write("format5.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
+  EXPECT_EQ(r.checkpoint.reference_shift.size(), 0);
+  EXPECT_EQ(r.checkpoint.trace.count(), 7);
+}
+
+TEST(RestartFile, TheReferenceShiftOfAnInverseStepIsKeptBitForBit) {
+  RestartRecord rec = record(7);
+  rec.checkpoint.reference_shift = Eigen::VectorXd::Constant(rec.checkpoint.u.size(), 1.0 / 3.0);
+  const RestartRecord r = read_restart(write("shift.txt", restart_text(rec)));
+  ASSERT_EQ(r.checkpoint.reference_shift.size(), rec.checkpoint.u.size());
+  EXPECT_EQ(r.checkpoint.reference_shift, rec.checkpoint.reference_shift);
 }
