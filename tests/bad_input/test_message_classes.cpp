@@ -112,6 +112,30 @@ TEST(MessageClasses, AClosingBracketThatClosesNothingSaysSo) {
                       "Remove it, or add the `{` where the map begins; a value that holds a `}` is written in quotes");
 }
 
+TEST(MessageClasses, AColonAndSpaceInsideAValueWithoutQuotesSaysToQuoteIt) {
+  // yaml-cpp says only "illegal map value", at the `:` inside the value; the message keeps that
+  // column, names the key and gives the whole value quoted.
+  const std::string title = "title: rat abdominal aorta, inflation at fixed axial stretch 1.6";
+  const std::string bad = "title: rat aorta (flip: true) with pressure";
+  const Outcome o = expect_deck_message(
+      "colon-in-value", title, bad, bad, "",
+      "YAML syntax error: illegal map value: the value of 'title' contains `: `",
+      "quote the whole value, e.g. `title: \"rat aorta (flip: true) with pressure\"`");
+  EXPECT_SAYS(o, "colon-in-value.yaml:" + std::to_string(line_of(read_text(kExample), title)) + ":23:");
+  // Any key, at any depth, and a value that ends with `:`.
+  expect_deck_message("colon-in-value-nested", "    a1: 0.68238", "    a1: 0.68238 note: from table 2",
+                      "a1: 0.68238 note", "", "the value of 'a1' contains `: `",
+                      "e.g. `a1: \"0.68238 note: from table 2\"`");
+  expect_deck_message("colon-at-value-end", "    a1: 0.68238", "    a1: 0.68238:", "a1: 0.68238:", "",
+                      "the value of 'a1' contains a `:` at its end", "e.g. `a1: \"0.68238:\"`");
+  // Where the `:` yaml-cpp stops at is a key's own (a key indented under a plain value), there is
+  // no value to quote, and the message does not say so.
+  const Outcome own = expect_check_error(kScratch, "colon-of-a-key", replace(read_text(kExample), "    a1: 0.68238",
+                                                                             "    a1: 0.68238\n      note: x"),
+                                         "      note: x", "", "YAML syntax error: illegal map value");
+  EXPECT_EQ(own.output.find("quote"), std::string::npos) << own.output;
+}
+
 TEST(MessageClasses, UnknownKeyListsTheAllowedOnesAndTheNearest) {
   expect_deck_message("unknown-key", "    thickness: 0.122 mm", "    tickness: 0.122 mm", "tickness:",
                       "parts.wall.tickness", "unknown key 'tickness' (allowed here: element, material, thickness,",
