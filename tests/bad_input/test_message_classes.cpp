@@ -264,6 +264,47 @@ TEST(MessageClasses, UnknownElementTypeListsTheTypes) {
                       "did you mean 'axisymmetric_membrane'?");
 }
 
+TEST(MessageClasses, AQuantityNamedByItsDirectionSuggestsTheDirectionOfThePartsFrame) {
+  // S_z is one edit from S_1, the hoop stress; the axial stress is S_2. Axisymmetric parts: direction
+  // 1 is the hoop, 2 the meridian.
+  const Outcome axi = expect_deck_message("quantity-S_z", "{quantity: S_2, part: wall, name: S_z,",
+                                          "{quantity: S_z, part: wall, name: S_z,", "{quantity: S_z",
+                                          "output.history[5].quantity", "unknown quantity 'S_z' (known: time, pressure,",
+                                          "; did you mean 'S_2' (direction 2: the meridian, axial along a tube)?");
+  EXPECT_EQ(axi.output.find("'S_1'"), std::string::npos) << axi.output;
+  expect_deck_message("quantity-lambda_hoop", "{quantity: lambda_1, part: wall,", "{quantity: lambda_hoop, part: wall,",
+                      "{quantity: lambda_hoop", "output.history[1].quantity", "unknown quantity 'lambda_hoop'",
+                      "did you mean 'lambda_1' (direction 1: the hoop (circumferential) direction)?");
+  // 3-D parts: the directions of the part's frame, by any of the usual names, and the shear of both.
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  struct Case {
+    std::string from, to, fix;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"{quantity: S_2,", "{quantity: S_axial,",
+            "did you mean 'S_2' (direction 2 of the part's frame: axial in a cylindrical frame)?"},
+           {"{quantity: S_2,", "{quantity: cauchy_long,", "did you mean 'sigma_2' (direction 2 of the part's frame"},
+           {"{quantity: S_2,", "{quantity: sigma_meridional,", "did you mean 'sigma_2' (direction 2 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: sigma_theta,",
+            "did you mean 'sigma_1' (direction 1 of the part's frame: circumferential in a cylindrical frame)?"},
+           {"{quantity: S_1,", "{quantity: S_circ,", "did you mean 'S_1' (direction 1 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: E_t,", "did you mean 'E_1' (direction 1 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: lambda_c,", "did you mean 'lambda_1' (direction 1 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: lambda_z,", "did you mean 'lambda_2' (direction 2 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: lambda_radial,", "did you mean 'lambda_3' (direction 3: the thickness"},
+           {"{quantity: S_12,", "{quantity: S_theta_z,", "did you mean 'S_12' (the shear of directions 1 and 2"}}) {
+    const std::string quantity = c.to.substr(11, c.to.size() - 12);
+    const Outcome o = expect_check_error(kScratch, "quantity-" + quantity, replace(quarter, c.from, c.to), c.to, "",
+                                         "unknown quantity '" + quantity + "' (known: ");
+    EXPECT_SAYS(o, c.fix);
+  }
+  // A name that does not map so keeps the nearest spelling.
+  const Outcome typo = expect_deck_message("quantity-typo", "{quantity: thickness,", "{quantity: thicknes,",
+                                           "{quantity: thicknes", "", "unknown quantity 'thicknes'",
+                                           "; did you mean 'thickness'?");
+  EXPECT_EQ(typo.output.find("direction"), std::string::npos) << typo.output;
+}
+
 TEST(MessageClasses, UndefinedMaterialListsTheMaterials) {
   expect_deck_message("undefined-material", "material: aorta", "material: aortta", "material: aortta",
                       "parts.wall.material", "undefined material 'aortta' (the materials in `materials` are: aorta",
