@@ -697,7 +697,10 @@ void read_output(const DeckNode& deck, Model& m) {
     if (!q) {
       std::string list;
       for (const auto& x : history_quantities()) list += (list.empty() ? "" : ", ") + x.name;
-      h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")" + did_you_mean(r.quantity, names_of(history_quantities())));
+      // A direction written by its name (S_z) is the quantity of that direction, not the nearest spelling (S_1).
+      std::string meant = direction_name_suggestion(r.quantity, m.geometry);
+      if (meant.empty()) meant = did_you_mean(r.quantity, names_of(history_quantities()));
+      h.fail("quantity", "unknown quantity '" + r.quantity + "' (known: " + list + ")" + meant);
     }
     r.dim = q->dim;
     const std::string target = target_key(q->target);

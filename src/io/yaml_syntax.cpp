@@ -6,6 +6,8 @@
 #include <tuple>
 #include <vector>
 
+#include "core/printable.hpp"
+
 namespace tunica {
 
 namespace {
@@ -71,6 +73,17 @@ std::string line_span(const std::string& text, int line, int from, int to) {
   return text.substr(start + from - 1, to - from + 1);
 }
 
+/// Line `line` (1-based) of `text`, without its line break ("" past the end).
+std::string line_text(const std::string& text, int line) {
+  std::size_t start = 0;
+  for (int l = 1; l < line; ++l) {
+    const std::size_t newline = text.find('\n', start);
+    if (newline == std::string::npos) return "";
+    start = newline + 1;
+  }
+  return text.substr(start, std::min(text.find('\n', start), text.size()) - start);
+}
+
 /// What may stand where yaml-cpp found a `}` or `]` that closes nothing or the wrong bracket
 /// ("illegal flow end"), at (line, column).
 std::string flow_end_cause(const std::string& text, int line, int column) {
@@ -90,6 +103,61 @@ std::string flow_end_cause(const std::string& text, int line, int column) {
   return fmt::format(": this `{}` would close the `{}` opened on line {}, column {}, which only `{}` closes (a `[` "
                      "list ends with `]`, a `{{` map with `}}`): {}",
                      c, opener, open_line, open_column, closer(opener), fix);
+}
+
+/// Why yaml-cpp found a map value where none may be ("illegal map value") at (line, column): the
+/// `:` there stands inside the plain (unquoted) value of a key on the same line, and a `: ` (or a
+/// `:` ending the line) in a plain value starts another key. "" when that is not the case (the
+/// `:` is a key's own, or the value is quoted, a flow collection, an anchor or a tag).
+std::string colon_in_value_cause(const std::string& text, int line, int column) {
+  const std::string full = line_text(text, line);
+  const std::size_t at = static_cast<std::size_t>(column - 1);
+  if (full.empty() || at >= full.size() || full[at] != ':') return "";
+  const auto ends_value = [&](std::size_t i) { return i + 1 >= full.size() || full[i + 1] == ' ' || full[i + 1] == '\t'; };
+  // The key: after the indentation and any `- ` of list items, up to its `: ` (a quoted key whole).
+  std::size_t k = 0;
+  while (k < full.size()) {
+    if (full[k] == ' ') ++k;
+    else if (full[k] == '-' && k + 1 < full.size() && full[k + 1] == ' ') k += 2;
+    else break;
+  }
+  std::size_t colon = k;
+  if (k < full.size() && (full[k] == '"' || full[k] == '\'')) {
+    colon = full.find(full[k], k + 1);
+    if (colon == std::string::npos) return "";
+    ++colon;
+  }
+  while (colon < at && !(full[colon] == ':' && ends_value(colon))) {
+    if (full[colon] == '#' && colon > 0 && (full[colon - 1] == ' ' || full[colon - 1] == '\t')) return "";
+    ++colon;
+  }
+  if (colon >= at || colon == k) return "";  // the `:` found is the key's own
+  const std::string key = full.substr(k, colon - k);
+  std::size_t v = colon + 1;
+  while (v < full.size() && (full[v] == ' ' || full[v] == '\t')) ++v;
+  if (v >= at || std::string("\"'[{|>&*!#%@`").find(full[v]) != std::string::npos) return "";
+  // The value runs to a comment (` #`) or the end of the line.
+  std::size_t end = full.size();
+  for (std::size_t i = v + 1; i < full.size(); ++i)
+    if (full[i] == '#' && (full[i - 1] == ' ' || full[i - 1] == '\t')) {
+      end = i;
+      break;
+    }
+  while (end > v && (full[end - 1] == ' ' || full[end - 1] == '\t' || full[end - 1] == '\r')) --end;
+  if (at >= end) return "";
+  const std::string value = full.substr(v, end - v);
+  std::string quoted;
+  if (value.find('"') == std::string::npos && value.find('\\') == std::string::npos) {
+    quoted = '"' + value + '"';
+  } else {
+    quoted = "'";
+    for (char c : value) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+    quoted += "'";
+  }
+  return fmt::format(": the value of '{}' contains {}, and in a value without quotes YAML reads a `:` followed by a "
+                     "space or the end of the line as the start of another key: quote the whole value, e.g. `{}: {}`",
+                     printable(key), at + 1 >= end ? "a `:` at its end" : "`: `", printable(key),
+                     printable(quoted, 200));
 }
 
 }  // namespace
@@ -115,7 +183,8 @@ InputError yaml_syntax_error(const YAML::Exception& e, const std::string& text, 
         break;
       }
   } else if (e.msg == "illegal flow end" && line > 0) {
-    cause = flow_end_cause(text, line, column);
+    cause = flow_end_cause(text, line, column);  } else if (e.msg == "illegal map value" && line > 0) {
+    cause = colon_in_value_cause(text, line, column);
   }
   return InputError({file, line, column, ""}, "YAML syntax error: " + e.msg + cause);
 }

@@ -3,7 +3,7 @@
 // where it noticed it, often lines after the cause and in its own terms; the message names the
 // cause where the text shows it: a tab in the indentation, a bracket left open (and where it was
 // opened), a closing bracket that closes nothing or closes the wrong bracket (and what may close
-// there).
+// there), a `: ` inside a value without quotes (and the value quoted).
 #include <yaml-cpp/yaml.h>
 
 #include <string>

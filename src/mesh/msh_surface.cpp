@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <limits>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <numeric>
 #include <unordered_map>
 
+#include "core/bounded_file.hpp"
 #include "core/errors.hpp"
 #include "core/printable.hpp"
 #include "mesh/msh_parser.hpp"
@@ -202,6 +205,63 @@ void check_coincident(const MshFile& f, const std::vector<long>& used, const std
   }
 }
 
+/// `path` names a Gmsh script (.geo): the mesh is the one Gmsh made of it.
+bool is_script(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".geo";
+}
+
+/// The line of the Gmsh script `path` that defines the physical surface `name`
+/// (`Physical Surface("name") = ...`, spaces anywhere), 0 if none does or the file cannot be read.
+int script_line_of_physical_surface(const std::string& path, const std::string& name) {
+  std::string text;
+  try {
+    text = read_file_bounded(path, std::size_t{64} << 20, "Gmsh script");
+  } catch (const std::exception&) {
+    return 0;
+  }
+  const auto squeeze = [](const std::string& t) {
+    std::string out;
+    for (char c : t)
+      if (c != ' ' && c != '\t' && c != '\r') out += c;
+    return out;
+  };
+  const std::string wanted = "PhysicalSurface(\"" + squeeze(name) + "\"";
+  int line = 1;
+  for (std::size_t start = 0; start < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    if (squeeze(text.substr(start, end - start)).find(wanted) != std::string::npos) return line;
+    start = end + 1;
+  }
+  return 0;
+}
+
+/// The message for the physical surface `name` (tag `tag`) that the file names but that holds
+/// no elements and no entity: its Physical Surface lists surfaces the geometry does not have.
+std::string empty_named_surface(const MshFile& f, const std::string& name, int tag, bool script) {
+  std::vector<int> surfaces;  // the surface entities of a 4.1 file
+  for (const auto& [entity, phys] : f.entity_physicals)
+    if (entity.first == 2) surfaces.push_back(entity.second);
+  std::string existing;
+  if (!surfaces.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < std::min<std::size_t>(surfaces.size(), 12); ++i)
+      list += (i ? ", " : "") + std::to_string(surfaces[i]);
+    if (surfaces.size() > 12) list += fmt::format(", … ({} in all)", surfaces.size());
+    existing = fmt::format("; the geometry's surfaces are numbered {}", list);
+  }
+  return fmt::format(
+      "physical surface '{}' (tag {}) {} but holds no elements: {}. Likely its Physical Surface names surface "
+      "numbers that do not exist after the geometry operations (BooleanFragments, BooleanUnion, BooleanDifference "
+      "and Coherence renumber the surfaces they touch){}: check the numbering, e.g. in the Gmsh GUI with the surface "
+      "labels shown (Tools > Options > Geometry > Visibility, or Geometry.SurfaceLabels = 1;), and list the "
+      "surfaces as numbered after the operations",
+      printable(name), tag, script ? "is defined" : "is named in $PhysicalNames",
+      script ? "none of the surfaces it lists exists in the geometry Gmsh meshed" : "no surface of the file belongs to it",
+      existing);
+}
+
 }  // namespace
 
 SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, const std::string& direction_view) {
@@ -257,6 +317,14 @@ SurfaceMesh surface_mesh_from_msh(const MshFile& f, const std::string& path, con
     surface_elements += s.tri.size() + s.quad.size();
     raw.push_back(std::move(s));
   }
+  // A named physical surface with no entity and no element: its Physical Surface listed surfaces
+  // that the geometry does not have (Gmsh writes the name all the same).
+  for (const auto& [key, name] : f.physical_names)
+    if (key.first == 2 && !groups.count(key)) {
+      const bool script = is_script(path);
+      throw InputError(SourceLocation{path, script ? script_line_of_physical_surface(path, name) : 0, 0, printable(name)},
+                       empty_named_surface(f, name, key.second, script));
+    }
   // Surface elements outside every physical surface would leave holes unseen: refused.
   // (By tag: a 2.2 file repeats an element once per physical group it belongs to.)
   if (!raw.empty()) {

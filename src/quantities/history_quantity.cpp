@@ -3,6 +3,7 @@
 #include "elements/membrane_compression.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <stdexcept>
 
@@ -235,6 +236,79 @@ const HistoryQuantity* find_history_quantity(const std::string& name) {
   }();
   const auto it = index.find(name);
   return it == index.end() ? nullptr : it->second;
+}
+
+namespace {
+
+/// The direction a usual name of it stands for: 1 (circumferential), 2 (axial, meridional), 3
+/// (thickness: only with `thickness`), 0 for none. `name` is in lower case.
+int direction_of_word(const std::string& name, bool thickness) {
+  static const std::map<std::string, int> words = {
+      {"1", 1}, {"theta", 1}, {"th", 1}, {"t", 1}, {"\xce\xb8", 1}, {"circ", 1}, {"circumferential", 1},
+      {"circumference", 1}, {"hoop", 1}, {"c", 1},
+      {"2", 2}, {"z", 2}, {"axial", 2}, {"ax", 2}, {"long", 2}, {"longitudinal", 2}, {"meridional", 2},
+      {"meridian", 2}, {"mer", 2}, {"s", 2},
+      {"3", 3}, {"r", 3}, {"radial", 3}, {"rad", 3}, {"thickness", 3}, {"thick", 3}, {"n", 3}, {"normal", 3}};
+  const auto it = words.find(name);
+  if (it == words.end() || (it->second == 3 && !thickness)) return 0;
+  return it->second;
+}
+
+/// The direction(s) of a suffix: 1, 2 or 3 for one direction (or one written twice: zz,
+/// theta_theta), 12 for the two in-plane directions (theta_z, zt), 0 for none.
+int directions_of_suffix(const std::string& suffix, bool thickness) {
+  if (const int d = direction_of_word(suffix, thickness)) return d;
+  for (std::size_t cut = 1; cut < suffix.size(); ++cut) {
+    std::string a = suffix.substr(0, cut), b = suffix.substr(cut);
+    if (b.front() == '_') b.erase(0, 1);
+    if (a.empty() || b.empty()) continue;
+    const int da = direction_of_word(a, thickness), db = direction_of_word(b, thickness);
+    if (da == 0 || db == 0) continue;
+    if (da == db) return da;
+    if (da + db == 3) return 12;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::string direction_name_suggestion(const std::string& name, Geometry geometry) {
+  // The families of quantities with a direction in the part's frame, by the names people write for them.
+  static const std::vector<std::pair<std::string, std::string>> families = {
+      {"lambda", "lambda"}, {"stretch", "lambda"}, {"e", "E"},     {"strain", "E"},     {"s", "S"},
+      {"pk2", "S"},         {"sigma", "sigma"},    {"cauchy", "sigma"}, {"stress", "sigma"}, {"m", "M"},
+      {"moment", "M"}};
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::string surface;  // a shell's outer or inner surface, as sigma_1_outer
+  for (const char* side : {"_outer", "_inner"})
+    if (lower.size() > 6 && lower.compare(lower.size() - 6, 6, side) == 0) {
+      surface = side;
+      lower.erase(lower.size() - 6);
+    }
+  for (const auto& [prefix, family] : families) {
+    if (lower.size() <= prefix.size() + 1 || lower.compare(0, prefix.size() + 1, prefix + "_") != 0) continue;
+    const int d = directions_of_suffix(lower.substr(prefix.size() + 1), family == "lambda");
+    if (d == 0) continue;
+    const std::string meant = family + "_" + std::to_string(d) + surface;
+    if (meant == name || !find_history_quantity(meant)) continue;
+    const bool axi = geometry == Geometry::axisymmetric;
+    std::string what;
+    if (d == 1)
+      what = axi ? "direction 1: the hoop (circumferential) direction"
+                 : "direction 1 of the part's frame: circumferential in a cylindrical frame";
+    else if (d == 2)
+      what = axi ? "direction 2: the meridian, axial along a tube"
+                 : "direction 2 of the part's frame: axial in a cylindrical frame";
+    else if (d == 3)
+      what = "direction 3: the thickness, radial in a tube";
+    else
+      what = axi ? "the shear of directions 1 and 2, hoop and meridian (0 in axisymmetry)"
+                 : "the shear of directions 1 and 2 of the part's frame: circumferential and axial in a cylindrical "
+                   "frame";
+    return "; did you mean '" + meant + "' (" + what + ")?";
+  }
+  return "";
 }
 
 }  // namespace tunica

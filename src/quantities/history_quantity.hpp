@@ -50,4 +50,11 @@ const std::vector<HistoryQuantity>& history_quantities();
 /// The quantity of that name, or nullptr.
 const HistoryQuantity* find_history_quantity(const std::string& name);
 
+/// For a name that writes the direction of a directional quantity by its usual name rather than
+/// by its number in the part's frame (S_z, lambda_theta, sigma_hoop_outer, cauchy_axial,
+/// E_theta_z; 1 = circumferential, 2 = axial or meridional, 3 = the thickness): "; did you mean
+/// 'S_2' (direction 2 of the part's frame: …)?", the direction described for models of
+/// `geometry`. "" for a name that does not map so onto a quantity.
+std::string direction_name_suggestion(const std::string& name, Geometry geometry);
+
 }  // namespace tunica

@@ -212,6 +212,53 @@ TEST(BadMeshes, TunicaMeshRefusesWhatIsNotAScriptOrNotAMeshFileAndBadResults) {
   EXPECT_NE(o.output.find("exits.geo: the script ended before Gmsh wrote a mesh"), std::string::npos) << o.output;
 }
 
+TEST(BadMeshes, APhysicalSurfaceThatHoldsNoElementsIsNamedWithItsTagAndTheLikelyCause) {
+  // `Physical Surface("sac") = {7};` where the geometry has only surface 1 (as after a
+  // BooleanFragments renumbered the surfaces): Gmsh writes the name and no element of it.
+  const fs::path dir = scratch("bad-meshes", "empty-group");
+  const std::string square = "Point(1) = {0, 0, 0, 1}; Point(2) = {1, 0, 0, 1}; Point(3) = {1, 1, 0, 1};\n"
+                             "Point(4) = {0, 1, 0, 1}; Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+                             "Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n";
+  std::ofstream(dir / "sac.geo") << square << "Physical Surface(\"sac\") = {7};\n";
+  Outcome o = run_cli("mesh " + (dir / "sac.geo").string() + " -o " + (dir / "sac.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+  EXPECT_NE(o.output.find((dir / "sac.geo").string() +
+                          ":4: key 'sac': physical surface 'sac' (tag 1) is defined but holds no elements: none of "
+                          "the surfaces it lists exists in the geometry Gmsh meshed"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("surface numbers that do not exist after the geometry operations (BooleanFragments"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("the geometry's surfaces are numbered 1: check the numbering, e.g. in the Gmsh GUI"),
+            std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("defines no physical surface"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("nothing was written"), std::string::npos) << o.output;
+  // Beside a group that holds elements, the empty one is named all the same, by its own tag and line.
+  std::ofstream(dir / "two.geo") << square << "Physical Surface(\"wall\") = {1};\n"
+                                 << "Physical Surface( \"sac\" ) = {7, 8};\n";
+  o = run_cli("mesh " + (dir / "two.geo").string() + " -o " + (dir / "two.msh").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find((dir / "two.geo").string() +
+                          ":5: key 'sac': physical surface 'sac' (tag 2) is defined but holds no elements"),
+            std::string::npos)
+      << o.output;
+  EXPECT_FALSE(fs::exists(dir / "two.msh"));
+  // A mesh file that names a physical surface no element belongs to.
+  std::string empty = msh(kGood, 2);
+  empty.replace(empty.find("$PhysicalNames\n2\n"), 17, "$PhysicalNames\n3\n2 7 \"sac\"\n");
+  std::ofstream(dir / "square.msh") << empty;
+  std::ofstream(dir / "deck.yaml") << kDeck;
+  o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("square.msh: key 'sac': physical surface 'sac' (tag 7) is named in $PhysicalNames but holds "
+                          "no elements: no surface of the file belongs to it"),
+            std::string::npos)
+      << o.output;
+}
+
 TEST(BadMeshes, AFailedTunicaMeshSaysTheEarlierMeshIsKeptAndWhyAnEdgeLoopDoesNotClose) {
   // Two strips extruded from lines whose shared end is two points at the same position: with
   // AutoCoherence off they are not merged, and Gmsh stops with "not forming a closed loop",

@@ -112,6 +112,30 @@ TEST(MessageClasses, AClosingBracketThatClosesNothingSaysSo) {
                       "Remove it, or add the `{` where the map begins; a value that holds a `}` is written in quotes");
 }
 
+TEST(MessageClasses, AColonAndSpaceInsideAValueWithoutQuotesSaysToQuoteIt) {
+  // yaml-cpp says only "illegal map value", at the `:` inside the value; the message keeps that
+  // column, names the key and gives the whole value quoted.
+  const std::string title = "title: rat abdominal aorta, inflation at fixed axial stretch 1.6";
+  const std::string bad = "title: rat aorta (flip: true) with pressure";
+  const Outcome o = expect_deck_message(
+      "colon-in-value", title, bad, bad, "",
+      "YAML syntax error: illegal map value: the value of 'title' contains `: `",
+      "quote the whole value, e.g. `title: \"rat aorta (flip: true) with pressure\"`");
+  EXPECT_SAYS(o, "colon-in-value.yaml:" + std::to_string(line_of(read_text(kExample), title)) + ":23:");
+  // Any key, at any depth, and a value that ends with `:`.
+  expect_deck_message("colon-in-value-nested", "    a1: 0.68238", "    a1: 0.68238 note: from table 2",
+                      "a1: 0.68238 note", "", "the value of 'a1' contains `: `",
+                      "e.g. `a1: \"0.68238 note: from table 2\"`");
+  expect_deck_message("colon-at-value-end", "    a1: 0.68238", "    a1: 0.68238:", "a1: 0.68238:", "",
+                      "the value of 'a1' contains a `:` at its end", "e.g. `a1: \"0.68238:\"`");
+  // Where the `:` yaml-cpp stops at is a key's own (a key indented under a plain value), there is
+  // no value to quote, and the message does not say so.
+  const Outcome own = expect_check_error(kScratch, "colon-of-a-key", replace(read_text(kExample), "    a1: 0.68238",
+                                                                             "    a1: 0.68238\n      note: x"),
+                                         "      note: x", "", "YAML syntax error: illegal map value");
+  EXPECT_EQ(own.output.find("quote"), std::string::npos) << own.output;
+}
+
 TEST(MessageClasses, UnknownKeyListsTheAllowedOnesAndTheNearest) {
   expect_deck_message("unknown-key", "    thickness: 0.122 mm", "    tickness: 0.122 mm", "tickness:",
                       "parts.wall.tickness", "unknown key 'tickness' (allowed here: element, material, thickness,",
@@ -238,6 +262,47 @@ TEST(MessageClasses, UnknownElementTypeListsTheTypes) {
                       "element: axisymetric_membrane", "parts.wall.element",
                       "'axisymetric_membrane' is not one of: axisymmetric_membrane, membrane,",
                       "did you mean 'axisymmetric_membrane'?");
+}
+
+TEST(MessageClasses, AQuantityNamedByItsDirectionSuggestsTheDirectionOfThePartsFrame) {
+  // S_z is one edit from S_1, the hoop stress; the axial stress is S_2. Axisymmetric parts: direction
+  // 1 is the hoop, 2 the meridian.
+  const Outcome axi = expect_deck_message("quantity-S_z", "{quantity: S_2, part: wall, name: S_z,",
+                                          "{quantity: S_z, part: wall, name: S_z,", "{quantity: S_z",
+                                          "output.history[5].quantity", "unknown quantity 'S_z' (known: time, pressure,",
+                                          "; did you mean 'S_2' (direction 2: the meridian, axial along a tube)?");
+  EXPECT_EQ(axi.output.find("'S_1'"), std::string::npos) << axi.output;
+  expect_deck_message("quantity-lambda_hoop", "{quantity: lambda_1, part: wall,", "{quantity: lambda_hoop, part: wall,",
+                      "{quantity: lambda_hoop", "output.history[1].quantity", "unknown quantity 'lambda_hoop'",
+                      "did you mean 'lambda_1' (direction 1: the hoop (circumferential) direction)?");
+  // 3-D parts: the directions of the part's frame, by any of the usual names, and the shear of both.
+  const std::string quarter = read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml");
+  struct Case {
+    std::string from, to, fix;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"{quantity: S_2,", "{quantity: S_axial,",
+            "did you mean 'S_2' (direction 2 of the part's frame: axial in a cylindrical frame)?"},
+           {"{quantity: S_2,", "{quantity: cauchy_long,", "did you mean 'sigma_2' (direction 2 of the part's frame"},
+           {"{quantity: S_2,", "{quantity: sigma_meridional,", "did you mean 'sigma_2' (direction 2 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: sigma_theta,",
+            "did you mean 'sigma_1' (direction 1 of the part's frame: circumferential in a cylindrical frame)?"},
+           {"{quantity: S_1,", "{quantity: S_circ,", "did you mean 'S_1' (direction 1 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: E_t,", "did you mean 'E_1' (direction 1 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: lambda_c,", "did you mean 'lambda_1' (direction 1 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: lambda_z,", "did you mean 'lambda_2' (direction 2 of the part's frame"},
+           {"{quantity: S_1,", "{quantity: lambda_radial,", "did you mean 'lambda_3' (direction 3: the thickness"},
+           {"{quantity: S_12,", "{quantity: S_theta_z,", "did you mean 'S_12' (the shear of directions 1 and 2"}}) {
+    const std::string quantity = c.to.substr(11, c.to.size() - 12);
+    const Outcome o = expect_check_error(kScratch, "quantity-" + quantity, replace(quarter, c.from, c.to), c.to, "",
+                                         "unknown quantity '" + quantity + "' (known: ");
+    EXPECT_SAYS(o, c.fix);
+  }
+  // A name that does not map so keeps the nearest spelling.
+  const Outcome typo = expect_deck_message("quantity-typo", "{quantity: thickness,", "{quantity: thicknes,",
+                                           "{quantity: thicknes", "", "unknown quantity 'thicknes'",
+                                           "; did you mean 'thickness'?");
+  EXPECT_EQ(typo.output.find("direction"), std::string::npos) << typo.output;
 }
 
 TEST(MessageClasses, UndefinedMaterialListsTheMaterials) {
