@@ -21,6 +21,7 @@
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
 #include "../support/deck_files.hpp"
+#include "../support/scratch.hpp"
 #include "assembly/pressure_load_checks.hpp"
 #include "io/deck.hpp"
 
@@ -93,7 +94,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 TEST(Eversion, ASacPushedPastItsPressureMaximumIsNeverAcceptedInsideOut) {
   const std::string deck = write_deck_file("tunica-eversion", "sac", kSac);
   std::ofstream(std::filesystem::path(deck).parent_path() / "sac.geo") << kSacGeo;
-  const std::string dir = (std::filesystem::temp_directory_path() / "tunica-eversion" / "out").string();
+  const std::string dir = test::scratch("eversion", "out").string();
   std::filesystem::remove_all(dir);
   const Outcome o = run_cli("run --allow-scripts -q " + deck + " -o " + dir);
   // Every converged state keeps the volume's sign.
@@ -120,7 +121,7 @@ TEST(Eversion, WhenNoCutBackIsLeftTheStopSaysTheSurfaceTurnedInsideOutAndWhatToD
   text.replace(text.find("set: {blood: 120 mmHg}}"), 23, "set: {blood: 120 mmHg}, solver: {max_cutbacks: 0}}");
   const std::string deck = write_deck_file("tunica-eversion", "sac-no-cutbacks", text);
   std::ofstream(std::filesystem::path(deck).parent_path() / "sac.geo") << kSacGeo;
-  const std::string dir = (std::filesystem::temp_directory_path() / "tunica-eversion" / "out-no-cutbacks").string();
+  const std::string dir = test::scratch("eversion", "out-no-cutbacks").string();
   std::filesystem::remove_all(dir);
   const Outcome o = run_cli("run --allow-scripts -q " + deck + " -o " + dir);
   EXPECT_EQ(o.exit_code, 3) << o.output;
