@@ -29,7 +29,14 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
     return newton(bordered, solver, settings, on_iteration, start ? &*start : nullptr);
   }
   const StartStiffness* stiffness = nullptr;
-  if (settings.stiffen_stress_free_start && stress_free) {
+  std::unique_ptr<StartStiffness> inverse_k0;
+  if (inverse) {
+    // The inverse tangent is regularized at every iteration (13.11), the first included.
+    inverse_k0 = std::make_unique<StartStiffness>(system, loads);
+    if (settings.stiffen_stress_free_start && stress_free) stiffness = inverse_k0.get();
+    equilibrium.add_hook(std::make_unique<InverseRegularization>(
+        *inverse_k0, [&equilibrium] { return equilibrium.last_residual_norm(); }));
+  } else if (settings.stiffen_stress_free_start && stress_free) {
     auto hook = std::make_unique<StartStiffness>(system, loads);
     stiffness = hook.get();
     equilibrium.add_hook(std::move(hook));

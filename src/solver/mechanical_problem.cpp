@@ -31,6 +31,7 @@ double MechanicalProblem::evaluate(Eigen::VectorXd& r) {
   double scale = 0;
   system_.assemble(u_, loads_, R_, &K_, &scale, &active_contacts_, &active_set_);
   r = free_part(R_);
+  last_norm_ = r.norm();
   return scale;
 }
 

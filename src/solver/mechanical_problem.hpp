@@ -20,6 +20,8 @@ public:
 
   /// Appends a tangent modification; hooks are applied in the order added.
   void add_hook(std::unique_ptr<TangentHook> hook) { hooks_.push_back(std::move(hook)); }
+  /// ‖R‖ over the free DOFs at the last evaluation (before any line-search step back).
+  double last_residual_norm() const { return last_norm_; }
 
   int size() const override { return system_.num_free(); }
   double evaluate(Eigen::VectorXd& r) override;
@@ -46,6 +48,7 @@ private:
   Eigen::VectorXd& u_;
   TangentMatrix K_;
   Eigen::VectorXd R_;  // all DOFs
+  double last_norm_ = 0;
   std::vector<std::unique_ptr<TangentHook>> hooks_;
   double max_correction_ = 0;
   int active_contacts_ = 0;

@@ -2,6 +2,8 @@
 // Modifications of the tangent that change Newton's direction but never its converged state
 // (the residual stays exact): they are attached to a MechanicalProblem, which applies them in
 // the order attached to the Jacobian it hands to Newton (solver/nonlinear_problem.hpp).
+#include <algorithm>
+#include <functional>
 #include <optional>
 
 #include <Eigen/Core>
@@ -32,10 +34,39 @@ public:
   Eigen::VectorXd add(const Eigen::VectorXd& d, TangentMatrix& K) const {
     return system_.add_start_stiffness(loads_, d, K);
   }
+  /// K += θ K₀ (K₀ is linear in the pressures).
+  void add_scaled(double theta, TangentMatrix& K) const {
+    LoadState scaled = loads_;
+    for (double& p : scaled.pressure) p *= theta;
+    system_.add_start_stiffness(scaled, Eigen::VectorXd(), K);
+  }
 
 private:
   const System& system_;
   const LoadState& loads_;
+};
+
+/// The inverse problem's tangent ∂R/∂X (theory manual §13) regularized at every iteration by the
+/// start stiffness of the opposite sign, scaled by the residual: K − θ_k K₀, θ_k = min(1, ‖R_k‖/‖R_0‖)
+/// ((13.11); a Levenberg–Marquardt step with K₀ for the metric). A surface without double
+/// curvature (a tube) has reference shapes that differ by an inextensional motion and give the
+/// imaged state the same residual to first order: ∂R/∂X is singular along them, and the
+/// regularization keeps the corrections off those modes while the residual stays exact.
+class InverseRegularization : public TangentHook {
+public:
+  InverseRegularization(const StartStiffness& k0, std::function<double()> residual_norm)
+      : k0_(k0), norm_(std::move(residual_norm)) {}
+  void apply(int iteration, TangentMatrix& K) override {
+    const double r = norm_();
+    if (iteration == 0) r0_ = r;
+    const double theta = r0_ > 0 ? std::min(1.0, r / r0_) : 0.0;
+    if (theta > 0) k0_.add_scaled(theta, K);
+  }
+
+private:
+  const StartStiffness& k0_;
+  std::function<double()> norm_;
+  double r0_ = 0;
 };
 
 /// K ← (K + Kᵀ)/2 at every iteration: the follower-pressure load stiffness symmetrized so that
