@@ -31,9 +31,10 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
   const StartStiffness* stiffness = nullptr;
   std::unique_ptr<StartStiffness> inverse_k0;
   if (inverse) {
-    // The inverse tangent is regularized at every iteration (13.11), the first included.
+    // The inverse tangent is regularized at every iteration (13.11), the first included, also the
+    // predictor's: the plain one moves the reference along its isometric modes.
     inverse_k0 = std::make_unique<StartStiffness>(system, loads);
-    if (settings.stiffen_stress_free_start && stress_free) stiffness = inverse_k0.get();
+    stiffness = inverse_k0.get();
     equilibrium.add_hook(std::make_unique<InverseRegularization>(
         *inverse_k0, [&equilibrium] { return equilibrium.last_residual_norm(); }));
   } else if (settings.stiffen_stress_free_start && stress_free) {

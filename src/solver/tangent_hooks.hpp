@@ -48,6 +48,7 @@ private:
 
 /// The inverse problem's tangent ∂R/∂X (theory manual §13) regularized at every iteration by the
 /// start stiffness of the opposite sign, scaled by the residual: K − θ_k K₀, θ_k = min(1, ‖R_k‖/‖R_0‖)
+/// (R_0 the first residual whose tangent it regularizes)
 /// ((13.11); a Levenberg–Marquardt step with K₀ for the metric). A surface without double
 /// curvature (a tube) has reference shapes that differ by an inextensional motion and give the
 /// imaged state the same residual to first order: ∂R/∂X is singular along them, and the
@@ -58,7 +59,8 @@ public:
       : k0_(k0), norm_(std::move(residual_norm)) {}
   void apply(int iteration, TangentMatrix& K) override {
     const double r = norm_();
-    if (iteration == 0) r0_ = r;
+    // R_0: the first residual it sees (iteration 1 after a first correction by the predictor).
+    if (iteration == 0 || !(r0_ > 0)) r0_ = r;
     const double theta = r0_ > 0 ? std::min(1.0, r / r0_) : 0.0;
     if (theta > 0) k0_.add_scaled(theta, K);
   }
