@@ -1,4 +1,6 @@
 // The inverse step against closed forms in 3-D and axisymmetric (issue #19; theory manual §13):
+//  - a neo-Hookean sphere octant imaged from a forward run: the inverse's reference radius against
+//    (13.9) at the imaged radius, the faceting error falling at order 2;
 //  - the paper's rat aorta (Fung) as a 3-D quarter tube imaged at 120 mmHg and λ_z = 1.6 gives back
 //    the reference tube R = 0.763 mm over 1 mm, the error of its facets falling at order 2;
 //  - an HGO artery imaged as a thin tube under pressure (13.11), ends held axially, so λ_z = 1 and
@@ -191,6 +193,68 @@ output: {{vtk: false}}
       EXPECT_GT(std::log2(previous / err), 1.8) << around;
     }
     EXPECT_EQ(f.cutbacks, 0) << around;
+    previous = err;
+  }
+}
+
+TEST(InverseSphere3d, OctantImagedFromAForwardRunAgreesWithTheClosedFormAtSecondOrder) {
+  // μ = 1 MPa, H = 0.01 mm, R = 1 mm, 0.0118 MPa; the imaged radius r_h is the pole's height, and
+  // (13.9) gives the reference radius R(r_h) that a smooth sphere imaged there would have.
+  const double p = 0.0118, mu = 1, H = 0.01;
+  double previous = 0;
+  for (int n : {4, 8, 16}) {
+    const std::string forward = fmt::format(R"(title: neo-Hookean sphere octant
+units: {{length: mm, force: N}}
+materials:
+  rubber: {{type: neo_hookean, mu: 1 MPa}}
+parts:
+  balloon:
+    element: membrane
+    material: rubber
+    thickness: 0.01 mm
+    mesh: {{type: octant, radius: 1 mm, n: {}}}
+boundary:
+  sym_x: {{node_set: balloon.x0, dofs: [x]}}
+  sym_y: {{node_set: balloon.y0, dofs: [y]}}
+  sym_z: {{node_set: balloon.z0, dofs: [z]}}
+loads:
+  inflation: {{type: pressure, part: balloon}}
+solver: {{residual_tolerance: 1e-12}}
+steps:
+  - {{name: inflate, increments: 10, set: {{inflation: 0.0118 MPa}}}}
+output: {{vtk: false}}
+)",
+                                            n);
+    const Model f = read_deck_text(forward, "octant.yaml");
+    Capture cf;
+    Analysis af(f);
+    af.run(cf);
+    int pole = 0;
+    for (int k = 0; k < f.num_nodes(); ++k)
+      if (f.X[k](2) > f.X[pole](2)) pole = k;
+    std::vector<Eigen::Vector3d> imaged = f.X;
+    for (int k = 0; k < f.num_nodes(); ++k) imaged[k] += af.displacement().segment<3>(3 * k);
+    std::string inverse = forward;
+    inverse.replace(inverse.find("name: inflate"), 13, "name: zero_pressure, type: inverse");
+    Model m = read_deck_text(inverse, "octant.yaml");
+    m.X = imaged;
+    Capture cap;
+    Analysis a(m);
+    a.run(cap);
+    const double r = imaged[pole](2), Rh = (imaged[pole] + a.displacement().segment<3>(3 * pole))(2);
+    const double R = r * std::pow(1 - p * r / (2 * mu * H), 1.0 / 6.0);  // (13.9): R = r/λ
+    const double err = std::abs(Rh / R - 1);
+    int iterations = 0;
+    for (const auto& it : cap.iterations) iterations = std::max(iterations, it.rec.iteration);
+    std::printf("3-D sphere octant, n = %d, imaged at the pole's r_h = %.8f mm under 0.0118 MPa: inverse R_h = "
+                "%.10f mm, closed form R(r_h) = %.8f mm, relative error %.3e%s; inverse iterations <= %d\n",
+                n, r, Rh, R, err, previous > 0 ? fmt::format(", order {:.2f}", std::log2(previous / err)).c_str() : "",
+                iterations);
+    EXPECT_NEAR(Rh, 1.0, 1e-9) << n;  // the forward run's reference
+    EXPECT_LT(err, 0.02) << n;
+    if (previous > 0) {
+      EXPECT_GT(std::log2(previous / err), 1.7) << n;
+    }
     previous = err;
   }
 }
