@@ -30,6 +30,7 @@
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/frame_axis_check.hpp"
+#include "model/wall_thickness_check.hpp"
 #include "model/symmetry_plane_check.hpp"
 #include "model/node_label.hpp"
 #include "model/rigid_motion_check.hpp"
@@ -875,6 +876,13 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   // A frame that does not fit its surface: at the part's `frame`.
   for (const FrameMisfit& f : frame_axis_warnings(m))
     m.warnings.push_back(format_location(deck["parts"][m.parts[f.part].name]["frame"].where(), f.message));
+  // A wall thicker than its part (a mesh in another length unit), or thick against its curvature:
+  // at the part's `thickness`.
+  for (const ThicknessMisfit& t : wall_thickness_misfits(m)) {
+    const DeckNode thickness = deck["parts"][m.parts[t.part].name]["thickness"];
+    if (t.impossible) thickness.fail(t.message);
+    m.warnings.push_back(format_location(thickness.where(), t.message));
+  }
   // A symmetry boundary that holds another DOF than the plane its nodes lie on: at the boundary.
   for (const SymmetryMisfit& s : symmetry_name_warnings(m))
     m.warnings.push_back(format_location(m.boundaries[s.boundary].where, s.message));

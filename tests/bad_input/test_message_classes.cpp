@@ -616,3 +616,35 @@ TEST(MessageClasses, ThirdOrderElementsAreNamedWithTheMeshingFix) {
   EXPECT_SAYS(c.o, "element 17 (line " + line + ") is a 10-node third-order triangle (type 21)");
   EXPECT_SAYS(c.o, "mesh with Mesh.ElementOrder = 1, or 2 with triangles only");
 }
+
+// ---------------------------------------------------------------- wall thickness against the surface
+
+TEST(MessageClasses, AThicknessBeyondThePartsExtentNamesTheMeshFileAndItsLengthUnit) {
+  // The square mesh's wall is 1 × 1 mm (diagonal 1.41 mm): a 3 mm wall is no membrane; a mesh in metres
+  // read as millimetres looks like this.
+  const fs::path dir = fs::temp_directory_path() / kScratch / "wall-beyond-extent";
+  fs::create_directories(dir);
+  std::ofstream(dir / "square.msh") << square_msh();
+  std::ofstream(dir / "deck.yaml") << replace(kMeshDeck, "thickness: 0.1 mm", "thickness: 3 mm");
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, "deck.yaml:8:");
+  EXPECT_SAYS(o, "key 'parts.wall.thickness'");
+  EXPECT_SAYS(o, "the thickness 3 mm is at least the whole part's extent, 1.414 mm");
+  EXPECT_SAYS(o, "square.msh");
+  EXPECT_SAYS(o, "another length unit than the deck's `units: {length: mm}`");
+  // The same mesh with the 0.1 mm wall is valid and says nothing of the thickness.
+  std::ofstream(dir / "deck.yaml") << kMeshDeck;
+  const Outcome fine = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(fine.exit_code, 0) << fine.output;
+  EXPECT_EQ(fine.output.find("thickness"), std::string::npos) << fine.output;
+}
+
+TEST(MessageClasses, AWallThickerThanItsRadiusIsWarnedAtItsThickness) {
+  const Outcome o = run_cli(
+      "check " + write_deck_file(kScratch, "thick-wall", replace(read_text(kExample), "thickness: 0.122 mm", "thickness: 1 mm")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_SAYS(o, "warning:");
+  EXPECT_SAYS(o, "key 'parts.wall.thickness'");
+  EXPECT_SAYS(o, "the thickness 1 mm is 1.3 times the part's typical radius of curvature, 0.763 mm");
+}
