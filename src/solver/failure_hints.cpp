@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "assembly/pressure_load_checks.hpp"
 #include "materials/membrane_material.hpp"
 #include "model/rigid_motion_check.hpp"
 
@@ -213,6 +214,22 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   else hints += rising;
   // No other evidence, and no increment converged from the stress-free reference (the first step):
   // an unstressed membrane resists motion out of its surface only through its curvature.
+  // A load the step raises that pushes its surface inward from the start (the run warned): the
+  // likely cause, before any advice on the stress-free start.
+  if (hints.empty() && &step == &model.steps.front() && converged.count() == 1) {
+    const LoadState& start = converged.first(0);
+    for (std::size_t l = 0; l < model.loads.size() && l < start.volume.size(); ++l) {
+      const PressureLoad& load = model.loads[l];
+      if (!(start.volume[l] < 0) || !step.targets.count(load.name) || load.part < 0 ||
+          load.part >= static_cast<int>(model.parts.size()))
+        continue;
+      add(fmt::format("load '{}' pushes its surface (part '{}') inward: its enclosed volume at the reference state is "
+                      "negative, because {}, as the warning at the start said. A pressure inside a vessel or balloon "
+                      "pushes outward: {}.",
+                      load.name, model.parts[load.part].name, inward_load_cause(load), inward_load_fix(model, load)));
+      return hints;
+    }
+  }
   if (hints.empty() && &step == &model.steps.front() && converged.count() == 1)
     add(step.solver.stiffen_stress_free_start
             ? "no increment converged from the stress-free reference state, where an unstressed membrane resists "

@@ -410,3 +410,20 @@ TEST(FailureHints, NoIncrementFromTheStressFreeStateSuggestsALittlePressureOrThe
   m.steps.push_back(raising(20));
   EXPECT_EQ(failure_hints(m, m.steps.back(), failed("diverging", 1), at_rest, trying(12)), "");
 }
+
+TEST(FailureHints, ALoadPushingItsSurfaceInwardFromTheStartNamesFlipNotTheStressFreeStart) {
+  Model m = one_load_model();
+  m.parts.emplace_back();
+  m.parts.back().name = "sac";
+  m.loads[0].part = 0;
+  m.geometry = Geometry::three_d;
+  m.steps.push_back(raising(10));
+  const std::string h = failure_hints(m, m.steps.front(), failed("diverging", 1), along({{0, -1}}), trying(2.5));
+  EXPECT_NE(h.find("load 'blood' pushes its surface (part 'sac') inward"), std::string::npos) << h;
+  EXPECT_NE(h.find("set `flip: true` on the load"), std::string::npos) << h;
+  EXPECT_EQ(h.find("stress-free reference state"), std::string::npos) << h;
+  // flip: true already set: remove it.
+  m.loads[0].sign = -1;
+  const std::string flipped = failure_hints(m, m.steps.front(), failed("diverging", 1), along({{0, -1}}), trying(2.5));
+  EXPECT_NE(flipped.find("remove `flip: true`"), std::string::npos) << flipped;
+}
