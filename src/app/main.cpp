@@ -59,6 +59,14 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   const tunica::OutputLock lock(out, /*create=*/restart.empty());
   if (!restart.empty()) {
     const std::string file = restart + "/restart.txt";
+    // A folder without a run's restart file: what --restart needs, and how to start the run there.
+    if (std::error_code ec; !std::filesystem::exists(file, ec))
+      throw tunica::InputError(
+          {file, 0, 0, ""},
+          fmt::format("cannot read the restart file: no such file: --restart continues a run in the folder that run "
+                      "wrote (it writes restart.txt after each converged increment), and {} holds none. Start the run "
+                      "there first: tunica run {} -o {}",
+                      restart, deck, restart));
     resume = std::make_unique<tunica::RestartRecord>(tunica::read_restart(file));
     if (const std::string warning = tunica::check_restart_fits(model, *resume, file); !warning.empty())
       std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(warning).c_str());

@@ -757,6 +757,13 @@ void read_output(const DeckNode& deck, Model& m) {
       r.contact = static_cast<int>(it - m.contacts.begin());
     }
     r.reduce = q->reduce;
+    // A value of the whole target (a load's pressure, a part's compressed fraction) has nothing to combine.
+    const bool reducible = q->membrane || q->solid || q->contact || q->target == QuantityTarget::node_set;
+    if (h.has("reduce") && !reducible)
+      h.fail("reduce", fmt::format("quantity '{}' is one value of its {}, with nothing to combine: leave `reduce` out",
+                                   r.quantity,
+                                   q->target == QuantityTarget::none ? std::string("model")
+                                                                     : std::string(target_key(q->target))));
     if (h.has("reduce")) {
       const std::string& s = h.text("reduce");
       r.reduce = s == "min" ? Reduce::min : s == "max" ? Reduce::max : s == "sum" ? Reduce::sum : Reduce::mean;

@@ -648,3 +648,24 @@ TEST(MessageClasses, AWallThickerThanItsRadiusIsWarnedAtItsThickness) {
   EXPECT_SAYS(o, "key 'parts.wall.thickness'");
   EXPECT_SAYS(o, "the thickness 1 mm is 1.3 times the part's typical radius of curvature, 0.763 mm");
 }
+
+TEST(MessageClasses, AReduceWhereThereIsNothingToCombineIsRefused) {
+  const Outcome o = run_cli("check " + write_deck_file(kScratch, "reduce-whole",
+                                                       replace(read_text(kExample), "    - {quantity: thickness, part: wall, unit: mm}",
+                                                               "    - {quantity: thickness, part: wall, unit: mm}\n"
+                                                               "    - {quantity: compressed_fraction, part: wall, reduce: max}")));
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, "key 'output.history[");
+  EXPECT_SAYS(o, "].reduce': quantity 'compressed_fraction' is one value of its part, with nothing to combine: leave "
+                 "`reduce` out");
+}
+
+TEST(MessageClasses, ARestartFromAFolderWithoutARunSaysHowToStartIt) {
+  const std::string deck = write_deck_file(kScratch, "restart-empty", read_text(kExample));
+  const fs::path empty = fs::temp_directory_path() / kScratch / "empty-run-folder";
+  fs::create_directories(empty);
+  const Outcome o = run_cli("run " + deck + " --restart " + empty.string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, (empty / "restart.txt").string() + ": cannot read the restart file: no such file");
+  EXPECT_SAYS(o, "Start the run there first: tunica run " + deck + " -o " + empty.string());
+}
