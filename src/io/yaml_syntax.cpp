@@ -160,6 +160,58 @@ std::string colon_in_value_cause(const std::string& text, int line, int column) 
                      printable(quoted, 200));
 }
 
+/// A quoted value on `line` that its own quote character ends early, with more text after the closing
+/// quote (`title: "tube with "quoted" word"`): the quote inside it and the fix (escape it, double
+/// it, or quote with the other character). "" when the line shows no such value.
+std::string quote_in_quoted_value_cause(const std::string& text, int line) {
+  const std::string full = line_text(text, line);
+  // The value: after the first `: ` outside quotes, past the indentation and any `- `.
+  std::size_t colon = std::string::npos;
+  for (std::size_t i = 0; i + 1 < full.size(); ++i) {
+    if (full[i] == '"' || full[i] == '\'') break;
+    if (full[i] == ':' && full[i + 1] == ' ') {
+      colon = i;
+      break;
+    }
+  }
+  if (colon == std::string::npos) return "";
+  std::size_t v = colon + 1;
+  while (v < full.size() && full[v] == ' ') ++v;
+  if (v >= full.size() || (full[v] != '"' && full[v] != '\'')) return "";
+  const char q = full[v];
+  std::size_t close = v + 1;
+  for (; close < full.size(); ++close) {
+    if (q == '"' && full[close] == '\\') {
+      ++close;  // an escape
+    } else if (q == '\'' && full[close] == '\'' && close + 1 < full.size() && full[close + 1] == '\'') {
+      ++close;  // '' inside single quotes
+    } else if (full[close] == q) {
+      break;
+    }
+  }
+  if (close >= full.size()) return "";
+  std::size_t after = close + 1;
+  while (after < full.size() && (full[after] == ' ' || full[after] == '\r')) ++after;
+  if (after >= full.size() || full[after] == '#' || full[after] == ',' || full[after] == '}' || full[after] == ']')
+    return "";
+  // The value as meant: from its opening quote to the last such quote on the line.
+  const std::size_t last = full.rfind(q);
+  if (last <= close) return "";
+  const std::string inner = full.substr(v + 1, last - v - 1);
+  const std::string key = full.substr(0, colon);
+  // Single quotes take `"` as it is and a `'` doubled: the fix needs no backslash.
+  std::string fixed = "'";
+  for (char c : inner) fixed += c == '\'' ? std::string("''") : std::string(1, c);
+  fixed += "'";
+  return fmt::format(": the `{}` at column {} ends the value that the `{}` at column {} opened, and text follows it. "
+                     "{}, e.g. `{}: {}`",
+                     q, close + 1, q, v + 1,
+                     q == '"' ? "A `\"` inside a double-quoted value is written `\\\"`; or quote the value with single "
+                                "quotes, inside which a `\"` stands as it is and a `'` is written `''`"
+                              : "A `'` inside a single-quoted value is written `''`",
+                     printable(key), printable(fixed, 200));
+}
+
 }  // namespace
 
 InputError yaml_syntax_error(const YAML::Exception& e, const std::string& text, const std::string& file) {
@@ -186,6 +238,7 @@ InputError yaml_syntax_error(const YAML::Exception& e, const std::string& text, 
     cause = flow_end_cause(text, line, column);  } else if (e.msg == "illegal map value" && line > 0) {
     cause = colon_in_value_cause(text, line, column);
   }
+  if (cause.empty() && line > 0) cause = quote_in_quoted_value_cause(text, line);
   return InputError({file, line, column, ""}, "YAML syntax error: " + e.msg + cause);
 }
 

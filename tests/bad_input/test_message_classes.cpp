@@ -136,6 +136,23 @@ TEST(MessageClasses, AColonAndSpaceInsideAValueWithoutQuotesSaysToQuoteIt) {
   EXPECT_EQ(own.output.find("quote"), std::string::npos) << own.output;
 }
 
+TEST(MessageClasses, AQuoteInsideAQuotedValueSaysHowToWriteIt) {
+  // yaml-cpp says "end of map not found" after the value its own quote ended early.
+  const std::string title = "title: rat abdominal aorta, inflation at fixed axial stretch 1.6";
+  expect_deck_message("quote-in-double-quotes", title, "title: \"tube with \"quoted\" word\"",
+                      "title: \"tube with", "",
+                      "YAML syntax error: end of map not found: the `\"` at column 19 ends the value that the `\"` at "
+                      "column 8 opened, and text follows it",
+                      "e.g. `title: 'tube with \"quoted\" word'`");
+  expect_deck_message("quote-in-single-quotes", title, "title: 'it's a tube'", "title: 'it's", "",
+                      "the `'` at column 11 ends the value that the `'` at column 8 opened",
+                      "A `'` inside a single-quoted value is written `''`, e.g. `title: 'it''s a tube'`");
+  // A quoted value followed by a comment is fine and gets no such hint.
+  const Outcome fine = run_cli("check " + write_deck_file(kScratch, "quoted-with-comment",
+                                                          replace(read_text(kExample), title, "title: \"a tube\"  # note")));
+  EXPECT_EQ(fine.exit_code, 0) << fine.output;
+}
+
 TEST(MessageClasses, UnknownKeyListsTheAllowedOnesAndTheNearest) {
   expect_deck_message("unknown-key", "    thickness: 0.122 mm", "    tickness: 0.122 mm", "tickness:",
                       "parts.wall.tickness", "unknown key 'tickness' (allowed here: element, material, thickness,",
