@@ -3,7 +3,7 @@
 // H = h λ₁λ₂, found with X, and the steps after the inverse step use it.
 //  - Round trips: a forward inflation from (X, H) gives the imaged nodes and the imaged thickness
 //    h = λ₃H at each Gauss point; the inverse step from them gives back X and H to 1e-8 relative
-//    (axisymmetric sphere; 3-D octant of quadrilaterals and of triangles).
+//    (axisymmetric sphere; 3-D octant of quadrilaterals, triangles and 6-node triangles).
 //  - The paper's rat aorta imaged at 120 mmHg, its thickness given as the closed form's imaged
 //    h = H/(λθ λz): the inverse step gives back R = 0.763 mm and H = 0.122 mm, and the steps after
 //    it follow those of examples/rat-aorta-inverse.yaml (reference thickness given).
@@ -15,8 +15,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "../support/capture.hpp"
+#include "../support/scratch.hpp"
+#include "../support/sphere_octant.hpp"
 #include "core/errors.hpp"
 
 using namespace tunica;
@@ -142,6 +145,48 @@ TEST(InverseImagedThickness, OctantRoundTripRecoversTheReferenceAndItsThickness)
       EXPECT_LT(r.thickness_error, 1e-8) << "n = " << n << shape;
       EXPECT_EQ(r.cutbacks, 0);
     }
+}
+
+TEST(InverseImagedThickness, SixNodeTriangleOctantRoundTripRecoversTheReferenceAndItsThickness) {
+  // The octahedron face's lattice on the unit sphere as 6-node triangles (as in test_inverse.cpp).
+  for (int n : {2, 4}) {
+    const std::filesystem::path msh = scratch("inverse-imaged-tri6") / fmt::format("octant-{}.msh", n);
+    sphere_octant_lattice(n, 2, OctantLattice::octahedron, 1.0).write(msh.string());
+    const std::string deck = fmt::format(R"(title: tri6 sphere octant
+units: {{length: mm, force: N}}
+materials:
+  rubber: {{type: neo_hookean, mu: 1 MPa}}
+parts:
+  balloon:
+    element: membrane
+    material: rubber
+    thickness: 0.01 mm
+    mesh: {{type: gmsh, file: {}, surface: wall}}
+boundary:
+  sym_x: {{node_set: x0, dofs: [x]}}
+  sym_y: {{node_set: y0, dofs: [y]}}
+  sym_z: {{node_set: z0, dofs: [z]}}
+loads:
+  inflation: {{type: pressure, part: balloon}}
+steps:
+  - name: inflate
+    increments: 8
+    set: {{inflation: 0.0115 MPa}}
+output:
+  vtk: false
+)",
+                                         msh.string()) +
+                             kTight;
+    const std::string file = (scratch("inverse-imaged-tri6") / "octant.yaml").string();
+    const Forward f = forward(deck, file);
+    const ImagedInverse r = imaged_round_trip(f, deck, file, 0.01);
+    std::printf("3-D octant of 6-node triangles, n = %d, 0.0115 MPa, imaged thickness per Gauss point: X within %.2e, "
+                "H within %.2e, iterations ≤ %d\n",
+                n, r.position_error, r.thickness_error, r.max_iterations);
+    EXPECT_LT(r.position_error, 1e-8) << "n = " << n;
+    EXPECT_LT(r.thickness_error, 1e-8) << "n = " << n;
+    EXPECT_EQ(r.cutbacks, 0);
+  }
 }
 
 TEST(InverseImagedThickness, InverseThenForwardEqualsTheForwardRunFromTheReference) {
