@@ -277,3 +277,41 @@ TEST(InverseImagedThickness, ImagedThicknessWithoutAnInverseStepIsRefused) {
     EXPECT_NE(what.find("no inverse step"), std::string::npos) << what;
   }
 }
+
+namespace {
+
+/// Keeps the checkpoint after increment `increment` of step `step` (1-based).
+class KeepCheckpoint final : public AnalysisObserver {
+public:
+  KeepCheckpoint(int step, int increment) : step_(step), increment_(increment) {}
+  void on_increment(const Analysis& a, const IncrementInfo& i) override {
+    if (i.step == step_ && i.increment == increment_) kept = a.checkpoint();
+  }
+  Checkpoint kept;
+
+private:
+  int step_, increment_;
+};
+
+}  // namespace
+
+TEST(InverseImagedThickness, ARestartPastTheInverseStepHasTheSameReferenceThicknessBitForBit) {
+  // The reference thickness (13.14) is recomputed from the checkpoint's reference shift.
+  const Forward f1 = forward(axisym_deck(40, 0.0118, 10), kAxisym);
+  std::string deck = replace(axisym_deck(40, 0.0118, 10), "name: inflate", "name: zero_pressure\n    type: inverse");
+  deck = replace(deck, "\noutput:", "\n  - name: deflate\n    increments: 6\n    set: {inflation: 0.008 MPa}\noutput:");
+  Model m = read_deck_text(deck, kAxisym);
+  m.X = f1.x;
+  m.parts[0].imaged_thickness = true;
+  m.parts[0].imaged_point_thickness = f1.h;
+  KeepCheckpoint keep(2, 3);
+  Analysis whole(m);
+  whole.run(keep);
+  ASSERT_EQ(keep.kept.reference_shift.size(), m.num_dofs());
+  Capture cap;
+  Analysis resumed(m);
+  resumed.run(cap, &keep.kept);
+  EXPECT_EQ(resumed.model().parts[0].point_thickness, whole.model().parts[0].point_thickness);
+  EXPECT_EQ(resumed.displacement(), whole.displacement());
+  EXPECT_FALSE(resumed.model().parts[0].point_thickness.empty());
+}
