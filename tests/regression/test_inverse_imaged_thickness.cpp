@@ -21,6 +21,7 @@
 #include "../support/scratch.hpp"
 #include "../support/sphere_octant.hpp"
 #include "core/errors.hpp"
+#include "output/vtk_writer.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -262,6 +263,13 @@ TEST(InverseImagedThickness, RatAortaFromItsImagedThicknessGivesThePapersTubeAnd
   EXPECT_LT(worst, 1e-8);
   // After the inverse step the reference thickness is H at every Gauss point.
   for (double Hq : a1.model().parts[0].point_thickness) EXPECT_NEAR(Hq / H, 1.0, 1e-8);
+  // The frames carry it as a cell field where a part has an imaged thickness, and only there.
+  const std::string vtu = meridian_vtu(a1, VtkFormat::ascii);
+  const std::size_t at = vtu.find("Name=\"reference_thickness_mm\"");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NEAR(std::stod(vtu.substr(vtu.find('>', at) + 1)) / H, 1.0, 1e-8);
+  EXPECT_EQ(meridian_vtu(a0, VtkFormat::ascii).find("reference_thickness"), std::string::npos);
+  EXPECT_NE(surface_vtu(a1, 4, VtkFormat::ascii).find("reference_thickness_mm"), std::string::npos);
 }
 
 TEST(InverseImagedThickness, ImagedThicknessWithoutAnInverseStepIsRefused) {
