@@ -23,10 +23,19 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
   const Part& part;
   const Model& model;
   const ElementBlock& block;
-  explicit AxisymMembraneKernel(const BlockContext& ctx) : part(ctx.part), model(ctx.model), block(ctx.block) {}
+  const int first_element;
+  explicit AxisymMembraneKernel(const BlockContext& ctx)
+      : part(ctx.part), model(ctx.model), block(ctx.block), first_element(ctx.first_element) {}
 
-  void internal(int, const State& s, Vector& f, Matrix* K) const {
-    axisym_membrane(s.X, s.x, part.thickness, *part.material, f, K);
+  /// The reference thickness at the Gauss points of element e: the part's, or the one an inverse
+  /// step computed from an imaged thickness (13.14).
+  std::array<double, 2> thickness(int e) const {
+    if (part.point_thickness.empty()) return {part.thickness, part.thickness};
+    const std::size_t i = 2 * static_cast<std::size_t>(first_element + e);
+    return {part.point_thickness.at(i), part.point_thickness.at(i + 1)};
+  }
+  void internal(int e, const State& s, Vector& f, Matrix* K) const {
+    axisym_membrane(s.X, s.x, thickness(e), *part.material, f, K);
   }
   double length2(const Model&, const int*, const State& s) const {
     return std::max((s.X.col(1) - s.X.col(0)).squaredNorm(), s.x.colwise().squaredNorm().maxCoeff());
@@ -47,19 +56,29 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
     const int* en = block.element(e);
     axisym_normal_tension_stiffness(model.X[en[0]].head<2>(), model.X[en[1]].head<2>(), T0, K);
   }
-  void inverse(int, const State& s, const Vector& ue, Vector& f, Matrix* K) const {
-    axisym_membrane_inverse(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f, K);
+  /// The imaged thickness h at the Gauss points of element e (theory manual (13.12)).
+  std::array<double, 2> imaged(int e) const {
+    if (part.imaged_point_thickness.empty()) return {part.thickness, part.thickness};
+    const std::size_t i = 2 * static_cast<std::size_t>(first_element + e);
+    return {part.imaged_point_thickness.at(i), part.imaged_point_thickness.at(i + 1)};
   }
-  void inverse_points(int, const State& s, const Vector& ue, std::vector<MembranePoint>& out) const {
+  void inverse(int e, const State& s, const Vector& ue, Vector& f, Matrix* K) const {
+    const std::array<double, 2> h = imaged(e);
+    axisym_membrane_inverse(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f, K,
+                            part.imaged_thickness ? &h : nullptr);
+  }
+  void inverse_points(int e, const State& s, const Vector& ue, std::vector<MembranePoint>& out) const {
     Vector f;
     std::array<MembranePoint, 2> pts;
-    axisym_membrane(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f, nullptr, &pts);
+    const std::array<double, 2> h = imaged(e);
+    axisym_membrane_inverse(s.x + Eigen::Map<const AxisymNodes>(ue.data()), s.x, part.thickness, *part.material, f,
+                            nullptr, part.imaged_thickness ? &h : nullptr, &pts);
     out.insert(out.end(), pts.begin(), pts.end());
   }
-  void points(int, const State& s, std::vector<MembranePoint>& out) const {
+  void points(int e, const State& s, std::vector<MembranePoint>& out) const {
     Vector f;
     std::array<MembranePoint, 2> pts;
-    axisym_membrane(s.X, s.x, part.thickness, *part.material, f, nullptr, &pts);
+    axisym_membrane(s.X, s.x, thickness(e), *part.material, f, nullptr, &pts);
     out.insert(out.end(), pts.begin(), pts.end());
   }
 };

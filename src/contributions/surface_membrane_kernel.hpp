@@ -24,9 +24,10 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
   const Part& part;
   const Model& model;
   const ElementBlock& block;
+  const int first_element;
   std::vector<MembraneReference<N>> refs;
   explicit SurfaceMembraneKernel(const BlockContext& ctx)
-      : part(ctx.part), model(ctx.model), block(ctx.block),
+      : part(ctx.part), model(ctx.model), block(ctx.block), first_element(ctx.first_element),
         refs(block_references<N>(ctx.model, ctx.part, ctx.block, ctx.first_element)) {}
 
   void internal(int e, const State& s, Vector& f, Matrix* K) const { membrane3d<N>(refs[e], s.x, *part.material, f, K); }
@@ -41,14 +42,26 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
   void start(int e, double T0, Matrix& K) const { normal_tension_stiffness<N>(refs[e], T0, K); }
   void inverse(int e, const State& s, const Vector& ue, Vector& f, Matrix* K) const {
     const SurfaceNodes<N> X = s.x + Eigen::Map<const SurfaceNodes<N>>(ue.data());
-    membrane3d_inverse<N>(X, s.x, part.thickness, frame_direction(model, part.frame, block, e), *part.material, f, K);
+    const auto h = imaged(e);
+    membrane3d_inverse<N>(X, s.x, part.thickness, frame_direction(model, part.frame, block, e), *part.material, f, K,
+                          part.imaged_thickness ? &h : nullptr);
+  }
+  /// The imaged thickness h at the Gauss points of element e (theory manual (13.12)).
+  std::array<double, SurfaceShapeTraits<N>::kPoints> imaged(int e) const {
+    std::array<double, SurfaceShapeTraits<N>::kPoints> h;
+    h.fill(part.thickness);
+    if (!part.imaged_point_thickness.empty())
+      for (int q = 0; q < SurfaceShapeTraits<N>::kPoints; ++q)
+        h[q] = part.imaged_point_thickness.at(static_cast<std::size_t>(first_element + e) * h.size() + q);
+    return h;
   }
   void inverse_points(int e, const State& s, const Vector& ue, std::vector<MembranePoint>& out) const {
     const SurfaceNodes<N> X = s.x + Eigen::Map<const SurfaceNodes<N>>(ue.data());
-    const FrameDirection d = frame_direction(model, part.frame, block, e);
     Vector f;
     std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints> pts;
-    membrane3d<N>(membrane_reference<N>(X, part.thickness, d.rule<N>(X)), s.x, *part.material, f, nullptr, &pts);
+    const auto h = imaged(e);
+    membrane3d_inverse<N>(X, s.x, part.thickness, frame_direction(model, part.frame, block, e), *part.material, f,
+                          nullptr, part.imaged_thickness ? &h : nullptr, &pts);
     out.insert(out.end(), pts.begin(), pts.end());
   }
   void points(int e, const State& s, std::vector<MembranePoint>& out) const {

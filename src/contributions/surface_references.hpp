@@ -33,6 +33,15 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
     for (int a = 0; a < N; ++a) X.col(a) = model.X[n[a]];
     try {
       out.push_back(membrane_reference<N>(X, part.thickness, direction_rule(model, part.frame, block, e)));
+      // A reference an inverse step computed from an imaged thickness: H per Gauss point (13.14).
+      if (!part.point_thickness.empty()) {
+        MembraneReference<N>& ref = out.back();
+        for (int q = 0; q < MembraneReference<N>::Q; ++q) {
+          const double H = part.point_thickness.at(static_cast<std::size_t>(first_element + e) * MembraneReference<N>::Q + q);
+          ref.weight[q] *= H / ref.thickness[q];
+          ref.thickness[q] = H;
+        }
+      }
     } catch (const BadElement& err) {
       // Named as in the mesh file where the elements come from one, else by 0-based index.
       const bool from_file = static_cast<int>(block.tags.size()) == block.size();

@@ -10,6 +10,12 @@ namespace tunica {
 
 void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const MembraneMaterial& material,
                      Eigen::Vector4d& f, Eigen::Matrix4d* K, std::array<MembranePoint, 2>* points) {
+  axisym_membrane(X, x, std::array<double, 2>{H, H}, material, f, K, points);
+}
+
+void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, const std::array<double, 2>& Hq,
+                     const MembraneMaterial& material, Eigen::Vector4d& f, Eigen::Matrix4d* K,
+                     std::array<MembranePoint, 2>* points) {
   const Eigen::Vector2d dX = X.col(1) - X.col(0);
   const Eigen::Vector2d dx = x.col(1) - x.col(0);
   const double L2 = dX.squaredNorm();
@@ -29,6 +35,7 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
   const double g = 0.5 / std::sqrt(3.0);
   const double xi[2] = {0.5 - g, 0.5 + g};
   for (int q = 0; q < 2; ++q) {
+    const double H = Hq[q];
     const double N0 = 1.0 - xi[q], N1 = xi[q];
     const double R = N0 * X(0, 0) + N1 * X(0, 1);
     const double r = N0 * x(0, 0) + N1 * x(0, 1);
@@ -70,6 +77,7 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
       p.e2 = Eigen::Vector3d(dX(0) / L, 0.0, dX(1) / L);
       p.cauchy = p.sigma(0) * p.e1 * p.e1.transpose() + p.sigma(1) * t * t.transpose();
       p.thickness = p.lambda(2) * H;
+      p.reference_thickness = H;
       p.W = m.W;
       p.weight = w;
     }

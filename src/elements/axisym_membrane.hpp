@@ -22,5 +22,10 @@ using AxisymNodes = Eigen::Matrix2d;
 /// Throws std::domain_error if a stretch is not positive.
 void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const MembraneMaterial& material,
                      Eigen::Vector4d& f, Eigen::Matrix4d* K, std::array<MembranePoint, 2>* points = nullptr);
+/// The same with a reference thickness H[q] of its own at each Gauss point q (a reference computed
+/// by an inverse step from an imaged thickness, theory manual (13.14)).
+void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, const std::array<double, 2>& H,
+                     const MembraneMaterial& material, Eigen::Vector4d& f, Eigen::Matrix4d* K,
+                     std::array<MembranePoint, 2>* points = nullptr);
 
 }  // namespace tunica

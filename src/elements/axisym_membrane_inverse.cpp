@@ -7,6 +7,9 @@
 //   B_θ = (r/R²) N_r: δB_θ = −2 (δR/R) B_θ,   δS = D (δE_θ, δE_s, 0),
 //   w = ½ L H 2πR: δw = w (δL/L + δR/R),
 //   f = w (S_θ B_θ + S_s B_s): δf = δw (S_θ B_θ + S_s B_s) + w (δS_θ B_θ + S_θ δB_θ + δS_s B_s + S_s δB_s).
+// With an imaged thickness h_q (13.12): H_q = h_q λ_s λ_θ = h_q (ℓ/L)(r/R), so w = ½ L H_q 2πR = π ℓ h_q r
+// is a function of the imaged nodes alone and δw = 0 (13.13): the δH_q = −H_q (δL/L + δR/R) of the
+// area stretch cancels δ(dA₀) exactly.
 #include "elements/axisym_membrane_inverse.hpp"
 
 #include <cmath>
@@ -16,7 +19,8 @@
 namespace tunica {
 
 void axisym_membrane_inverse(const AxisymNodes& X, const AxisymNodes& x, double H, const MembraneMaterial& material,
-                             Eigen::Vector4d& f, Eigen::Matrix4d* KX) {
+                             Eigen::Vector4d& f, Eigen::Matrix4d* KX, const std::array<double, 2>* imaged,
+                             std::array<MembranePoint, 2>* points) {
   const Eigen::Vector2d dX = X.col(1) - X.col(0);
   const double L2 = dX.squaredNorm();
   if (!(L2 > 0)) throw std::domain_error("axisymmetric membrane: reference element of zero length");
@@ -25,13 +29,19 @@ void axisym_membrane_inverse(const AxisymNodes& X, const AxisymNodes& x, double 
   for (double t : xi)
     if (!((1.0 - t) * X(0, 0) + t * X(0, 1) > 0))
       throw std::domain_error("axisymmetric membrane: reference radius not positive at a Gauss point");
-  // The residual: the forward element at (X, x).
-  axisym_membrane(X, x, H, material, f, nullptr);
-  if (!KX) return;
-  KX->setZero();
   const double L = std::sqrt(L2);
   const Eigen::Vector2d dx = x.col(1) - x.col(0);
   const double l2 = dx.squaredNorm();
+  // The reference thickness per Gauss point: H, or h_q λ_s λ_θ from an imaged thickness h_q (13.12).
+  std::array<double, 2> Hq{H, H};
+  if (imaged)
+    for (int q = 0; q < 2; ++q)
+      Hq[q] = (*imaged)[q] * (std::sqrt(l2) / L) * (((1.0 - xi[q]) * x(0, 0) + xi[q] * x(0, 1)) /
+                                         ((1.0 - xi[q]) * X(0, 0) + xi[q] * X(0, 1)));
+  // The residual: the forward element at (X, x).
+  axisym_membrane(X, x, Hq, material, f, nullptr, points);
+  if (!KX) return;
+  KX->setZero();
   const double Es = 0.5 * (l2 / L2 - 1.0);
   Eigen::Vector4d Bs;
   Bs << -dx, dx;
@@ -44,7 +54,7 @@ void axisym_membrane_inverse(const AxisymNodes& X, const AxisymNodes& x, double 
     const Eigen::Vector4d Nr(Nq[0], 0.0, Nq[1], 0.0);
     const Eigen::Vector4d Bt = (r / (R * R)) * Nr;
     const MembraneResponse m = membrane_response(material, Eigen::Vector3d(2.0 * Et + 1.0, 2.0 * Es + 1.0, 0.0));
-    const double w = 0.5 * L * H * 2.0 * std::numbers::pi * R;
+    const double w = 0.5 * L * Hq[q] * 2.0 * std::numbers::pi * R;
     const Eigen::Vector4d fq = m.S(0) * Bt + m.S(1) * Bs;
     for (int k = 0; k < 4; ++k) {
       const int a = k / 2, c = k % 2;
@@ -56,7 +66,7 @@ void axisym_membrane_inverse(const AxisymNodes& X, const AxisymNodes& x, double 
       const double dEt = -r * r * dR / (R * R * R);
       const Eigen::Vector4d dBt = -2.0 * (dR / R) * Bt;
       const Eigen::Vector3d dS = m.D * Eigen::Vector3d(dEt, dEs, 0.0);
-      const double dw = w * (dL / L + dR / R);
+      const double dw = imaged ? 0.0 : w * (dL / L + dR / R);  // (13.7), (13.13)
       KX->col(k) += dw * fq + w * (dS(0) * Bt + m.S(0) * dBt + dS(1) * Bs + m.S(1) * dBs);
     }
   }

@@ -50,7 +50,7 @@ struct MembraneReference {
   std::array<Eigen::Matrix<double, N, 1>, Q> shape;  ///< N_a at the Gauss point
   std::array<Eigen::Vector3d, Q> X;                  ///< reference position
   std::array<Eigen::Vector3d, Q> e1, e2;             ///< material frame (unit, tangent)
-  double thickness = 0;                              ///< reference thickness H
+  std::array<double, Q> thickness{};                 ///< reference thickness H
 };
 
 /// Why a reference element cannot be used.

@@ -37,7 +37,7 @@ template <int N>
 MembraneReference<N> membrane_reference(const SurfaceNodes<N>& X, double H, const DirectionRule& direction1) {
   constexpr int Q = SurfaceShapeTraits<N>::kPoints;
   MembraneReference<N> ref;
-  ref.thickness = H;
+  ref.thickness.fill(H);
 
   // Square of the longest edge, corner to corner (the scale of the degeneracy test).
   constexpr int kCorners = SurfaceShapeTraits<N>::kCorners;
@@ -172,7 +172,8 @@ void membrane3d(const MembraneReference<N>& ref, const SurfaceNodes<N>& x, const
       p.sigma_principal = Eigen::Vector2d(mean + rad, mean - rad);
       p.e1 = ref.e1[q];
       p.e2 = ref.e2[q];
-      p.thickness = p.lambda(2) * ref.thickness;
+      p.thickness = p.lambda(2) * ref.thickness[q];
+      p.reference_thickness = ref.thickness[q];
       p.W = m.W;
       p.weight = w;
     }

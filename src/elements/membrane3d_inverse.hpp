@@ -43,9 +43,15 @@ struct FrameDirection {
 /// thickness H: exactly membrane3d() at membrane_reference(X, H, direction.rule(X)). If KX is given,
 /// KX = ∂f/∂X (3N × 3N, node-major like f; not symmetric). Throws BadElement for a bad reference
 /// element (membrane_reference) and std::domain_error where membrane3d() does.
+/// With `imaged` (the wall thickness h_q of the imaged state x at each Gauss point; H unused), each
+/// Gauss point's reference thickness is H_q = h_q λ₁λ₂ = h_q |g₁ × g₂|/|G₁ × G₂| (theory manual
+/// (13.12)): the weight w_q H_q |G₁ × G₂| = w_q h_q |g₁ × g₂| then does not depend on X, (13.13).
+/// `points`, if given, receives the Gauss-point states (Q of them).
 /// Defined in membrane3d_inverse_impl.hpp, instantiated for N = 3, 4, 6 (membrane3d_inverse.cpp).
 template <int N>
 void membrane3d_inverse(const SurfaceNodes<N>& X, const SurfaceNodes<N>& x, double H, const FrameDirection& direction,
-                        const MembraneMaterial& material, ElementVector<N>& f, ElementMatrix<N>* KX);
+                        const MembraneMaterial& material, ElementVector<N>& f, ElementMatrix<N>* KX,
+                        const std::array<double, SurfaceShapeTraits<N>::kPoints>* imaged = nullptr,
+                        std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints>* points = nullptr);
 
 }  // namespace tunica

@@ -14,7 +14,10 @@
 //   δS = D (½δC11, ½δC22, δC12)   (D maps (δE11, δE22, 2δE12), membrane_response),
 //   f = F (w S) (∂N/∂s)ᵀ (column a = f_a, (5.6)):
 //   δf = F (δw S + w δS) (∂N/∂s)ᵀ + δF (w S) (∂N/∂s)ᵀ + F (w S) δ(∂N/∂s)ᵀ,
-// and column k of KX is δf. Included only by membrane3d_inverse.cpp.
+// and column k of KX is δf. With an imaged thickness h_q (13.12), H_q = h_q |g1 × g2|/|G1 × G2|
+// (g_α = Σ_a x_a ∂N_a/∂ξ^α) and w = w_q h_q |g1 × g2| depends on the imaged nodes alone: δw = 0
+// (13.13), the δH_q = −H_q n·δν/|ν| of the area stretch cancelling δ|ν|.
+// Included only by membrane3d_inverse.cpp.
 #include "elements/membrane3d_inverse.hpp"
 
 namespace tunica {
@@ -30,11 +33,23 @@ inline Eigen::Matrix2d symmetric2(const Eigen::Vector3d& v) {
 
 template <int N>
 void membrane3d_inverse(const SurfaceNodes<N>& X, const SurfaceNodes<N>& x, double H, const FrameDirection& direction,
-                        const MembraneMaterial& material, ElementVector<N>& f, ElementMatrix<N>* KX) {
+                        const MembraneMaterial& material, ElementVector<N>& f, ElementMatrix<N>* KX,
+                        const std::array<double, SurfaceShapeTraits<N>::kPoints>* imaged,
+                        std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints>* points) {
   constexpr int Q = SurfaceShapeTraits<N>::kPoints;
   // The residual: the forward element at the reference data of X (the same discrete equations).
-  const MembraneReference<N> ref = membrane_reference<N>(X, H, direction.rule<N>(X));
-  membrane3d<N>(ref, x, material, f, nullptr);
+  MembraneReference<N> ref = membrane_reference<N>(X, H, direction.rule<N>(X));
+  if (imaged)  // H_q = h_q λ₁λ₂ (13.12), the weight w_q H_q |G1 × G2| = w_q h_q |g1 × g2|
+    for (int q = 0; q < Q; ++q) {
+      double xi, eta, wq;
+      gauss_point<N>(q, xi, eta, wq);
+      const Eigen::Matrix<double, N, 2> dN = shape_derivatives<N>(xi, eta);
+      const Eigen::Matrix<double, 3, 2> G = X * dN, g = x * dN;
+      const double da = g.col(0).cross(g.col(1)).norm();
+      ref.thickness[q] = (*imaged)[q] * da / G.col(0).cross(G.col(1)).norm();
+      ref.weight[q] = wq * da * (*imaged)[q];
+    }
+  membrane3d<N>(ref, x, material, f, nullptr, points);
   if (!KX) return;
   KX->setZero();
   for (int q = 0; q < Q; ++q) {
@@ -82,7 +97,7 @@ void membrane3d_inverse(const SurfaceNodes<N>& X, const SurfaceNodes<N>& x, doub
       dE << de1, de2;
       const Eigen::Matrix2d dA = dE.transpose() * G + E.transpose() * dG;
       const Eigen::Matrix<double, N, 2> ddNds = dN * (-Ainv * dA * Ainv);
-      const double dw = wq * H * darea;
+      const double dw = imaged ? 0.0 : wq * H * darea;  // (13.5), (13.13)
       const Eigen::Matrix<double, 3, 2> dF = x * ddNds;
       const Eigen::Vector3d df1 = dF.col(0), df2 = dF.col(1);
       const Eigen::Vector3d dE3(f1.dot(df1), f2.dot(df2), df1.dot(f2) + f1.dot(df2));  // (δE11, δE22, 2δE12)

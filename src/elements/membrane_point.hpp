@@ -21,6 +21,7 @@ struct MembranePoint {
   Eigen::Vector3d e1 = Eigen::Vector3d::UnitX();     ///< reference material direction 1 (unit, tangent)
   Eigen::Vector3d e2 = Eigen::Vector3d::UnitY();     ///< reference material direction 2 (unit, tangent)
   double thickness = 0;            ///< current thickness h = λ3 H (shells: ∫ dη, elements/shell_output.hpp)
+  double reference_thickness = 0;  ///< reference thickness H (membranes; theory manual (13.12))
   /// Axisymmetric shells only (elements/shell_output.hpp; zero for membranes): bending moments
   /// (M_hoop, M_meridian) per current length, and the linearized surface stresses σ ± 6M/h²
   /// on the outer (side n) and inner surface.

@@ -14,7 +14,7 @@ void normal_tension_stiffness(const MembraneReference<N>& ref, double T0, Elemen
     const Eigen::Vector3d n = ref.e1[q].cross(ref.e2[q]);  // reference unit normal
     const Eigen::Matrix3d nn = n * n.transpose();
     const Eigen::Matrix<double, N, N> G = ref.dNds[q] * ref.dNds[q].transpose();
-    const double w = T0 * ref.weight[q] / ref.thickness;
+    const double w = T0 * ref.weight[q] / ref.thickness[q];
     for (int a = 0; a < N; ++a)
       for (int b = 0; b < N; ++b) K.template block<3, 3>(3 * a, 3 * b) += (w * G(a, b)) * nn;
   }

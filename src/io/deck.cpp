@@ -65,7 +65,16 @@ const ComponentSpec& part_spec() {
       {required(one_of(text("element", "element type"),
                        {"axisymmetric_membrane", "membrane", "axisymmetric_solid", "axisymmetric_shell"})),
        required(text("material", "name of a material in `materials`")),
-       required(positive(number("thickness", Dimension::length, "reference (load-free) wall thickness H"))),
+       required(positive(number("thickness", Dimension::length,
+                                "wall thickness: the reference (load-free) H, or with `thickness_at: imaged` the h "
+                                "measured in an inverse step's imaged state"))),
+       with_default(one_of(text("thickness_at",
+                                "membrane parts of a deck with an inverse step: `reference` (`thickness` is H) or "
+                                "`imaged` (`thickness` is the wall thickness h of the deck's imaged geometry; each "
+                                "Gauss point's reference thickness becomes H = h λ₁λ₂, which the steps after the "
+                                "inverse step use; theory manual (13.12)–(13.14))"),
+                           {"reference", "imaged"}),
+                    "reference"),
        required(structured("mesh", "map", "`type:` a generator (see Meshes) or `gmsh`, and its keys")),
        structured("frame", "map", "3-D parts: the material frame rule (see `parts.frame`)"),
        text("enter_step", "name of the step from which the part is assembled, stress free in its deck geometry "
@@ -319,6 +328,7 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
     part.name = name;
     part.element = p.text("element");
     if (!solid) part.thickness = p.number("thickness");
+    if (p.has("thickness_at")) part.imaged_thickness = p.text("thickness_at") == "imaged";
     part.material_name = p.text("material");
     auto mat = m.materials.find(part.material_name);
     auto smat = m.solid_materials.find(part.material_name);
@@ -866,6 +876,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   read_contacts(deck, m);
   const SolverSettings solver = read_solver(deck["solver"], m.units, SolverSettings{});
   read_steps(deck, m, solver);
+  // An imaged thickness is one of an inverse step's imaged geometry (theory manual (13.12)).
+  if (std::none_of(m.steps.begin(), m.steps.end(), [](const Step& s) { return s.inverse; }))
+    for (const Part& part : m.parts)
+      if (part.imaged_thickness)
+        deck["parts"][part.name]["thickness_at"].fail(
+            "`thickness_at: imaged` gives the wall thickness of an inverse step's imaged geometry, and this deck has no "
+            "inverse step: its geometry is the reference, so give the reference thickness H as `thickness` (without "
+            "`thickness_at`), or add a step of `type: inverse` first");
   read_output(deck, m);
   // A body free to move is said at `boundary`, where the fix goes; without that section, at the
   // first step the body takes part in, where its tangent is singular.

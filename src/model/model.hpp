@@ -105,7 +105,20 @@ struct Part {
   const SolidMaterial* solid_material = nullptr;  ///< solid parts (element `axisymmetric_solid`)
   SolidFormulation formulation = SolidFormulation::mean_dilatation;  ///< solid parts
   std::string material_name;
-  double thickness = 0;                    ///< reference thickness H (membranes and shells)
+  double thickness = 0;                    ///< reference thickness H (membranes and shells); with
+                                           ///< imaged_thickness, the wall thickness h of the imaged state
+  /// `imaged_thickness`: `thickness` is h, measured in the inverse step's imaged state, and each Gauss
+  /// point's reference thickness is H = h λ₁λ₂ (theory manual (13.12)), unknown until the inverse step
+  /// has converged.
+  bool imaged_thickness = false;
+  /// With imaged_thickness: h at each Gauss point (element-major, in block order, as System::points)
+  /// in place of the uniform `thickness`, e.g. a measured thickness map; empty: h = `thickness`.
+  /// Not a deck key.
+  std::vector<double> imaged_point_thickness;
+  /// The reference thickness H of each Gauss point (element-major, in block order, as System::points),
+  /// set when the reference of an imaged_thickness part is adopted after its inverse step ((13.14));
+  /// empty: H = `thickness` everywhere.
+  std::vector<double> point_thickness;
   int shell_meridian_points = 3;           ///< shells: Gauss points along each element's meridian
   int shell_thickness_points = 5;          ///< shells: Gauss points through the thickness
   std::vector<ElementBlock> blocks;        ///< axisymmetric membrane: one axisym2 block; solid: one solid4

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -44,8 +45,9 @@ std::vector<CellField> cell_fields(const Analysis& a) {
                               {"sigma_rz" + s, {}},      {"hydrostatic_pressure" + s, {}}, {"J", {}},
                               {"M_hoop" + fo, {}},       {"M_meridional" + fo, {}},
                               {"sigma_hoop_outer" + s, {}}, {"sigma_hoop_inner" + s, {}},
-                              {"sigma_meridional_outer" + s, {}}, {"sigma_meridional_inner" + s, {}}};
-  constexpr int kFields = 21;
+                              {"sigma_meridional_outer" + s, {}}, {"sigma_meridional_inner" + s, {}},
+                              {"reference_thickness" + l, {}}};
+  constexpr int kFields = 21;  // and reference_thickness, f[21] (models with an imaged thickness only)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
     if (m.parts[p].is_solid()) {
@@ -61,6 +63,7 @@ std::vector<CellField> cell_fields(const Analysis& a) {
                                    sigma(0), sigma(2), sigma(1), sigma(3), -(sigma(0) + sigma(1) + sigma(2)) / 3.0, J,
                                    nan, nan, nan, nan, nan, nan};
         for (int k = 0; k < kFields; ++k) f[k].values.push_back(v[k]);
+        f[kFields].values.push_back(nan);
       }
       continue;
     }
@@ -79,6 +82,7 @@ std::vector<CellField> cell_fields(const Analysis& a) {
         g.moment += x.moment / q;
         g.sigma_outer += x.sigma_outer / q;
         g.sigma_inner += x.sigma_inner / q;
+        g.reference_thickness += x.reference_thickness / q;
       }
       const Eigen::Matrix3d& c = g.cauchy;
       const double v[kFields] = {g.lambda(0), g.lambda(1), g.lambda(2), g.S(0), g.S(1), g.sigma(0), g.sigma(1),
@@ -86,8 +90,11 @@ std::vector<CellField> cell_fields(const Analysis& a) {
                                  -c.trace() / 3.0, 1.0, g.moment(0), g.moment(1), g.sigma_outer(0), g.sigma_inner(0),
                                  g.sigma_outer(1), g.sigma_inner(1)};
       for (int k = 0; k < kFields; ++k) f[k].values.push_back(v[k]);
+      f[kFields].values.push_back(g.reference_thickness);
     }
   }
+  // The reference thickness per cell where an inverse step computes it (theory manual (13.12)).
+  if (std::none_of(m.parts.begin(), m.parts.end(), [](const Part& part) { return part.imaged_thickness; })) f.pop_back();
   return f;
 }
 
@@ -234,7 +241,7 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
                               {"sigma_1" + s, {}},       {"sigma_2" + s, {}},       {"sigma_max" + s, {}},
                               {"sigma_min" + s, {}},     {"thickness" + l, {}},     {"part", {}},
                               {"direction_1", {}, 3},    {"direction_2", {}, 3},    {"cauchy_stress" + s, {}, 9},
-                              {"compressed", {}}};
+                              {"compressed", {}},        {"reference_thickness" + l, {}}};
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
     const auto pts = a.system().points(a.displacement(), static_cast<int>(p), a.loads().step);
     const std::vector<char> compressed = compressed_points(pts);
@@ -252,6 +259,7 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
           avg.sigma += x.sigma / q;
           avg.sigma_principal += x.sigma_principal / q;
           avg.thickness += x.thickness / q;
+          avg.reference_thickness += x.reference_thickness / q;
           avg.cauchy += x.cauchy / q;
         }
         const double v[15] = {avg.lambda(0), avg.lambda(1), avg.lambda(2), avg.E(0), avg.E(1), avg.E(2),
@@ -266,9 +274,12 @@ std::vector<CellField> surface_cell_fields(const Analysis& a) {
         double c = 0;
         for (int g = 0; g < q; ++g) c += compressed[k + g];
         f[18].values.push_back(c / q);
+        f[19].values.push_back(avg.reference_thickness);
       }
     }
   }
+  // The reference thickness per cell where an inverse step computes it (theory manual (13.12)).
+  if (std::none_of(m.parts.begin(), m.parts.end(), [](const Part& part) { return part.imaged_thickness; })) f.pop_back();
   return f;
 }
 

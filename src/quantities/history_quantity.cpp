@@ -135,6 +135,10 @@ std::vector<Q> make_table() {
   }
   t.push_back(membrane("thickness", Dimension::length, "current thickness h = λ3 H",
                        [](const MembranePoint& p) { return p.thickness; }));
+  t.push_back(membrane("reference_thickness", Dimension::length,
+                       "membranes: reference thickness H (the part's `thickness`, or with `thickness_at: imaged` "
+                       "h λ₁λ₂ from the inverse step, theory manual (13.12))",
+                       [](const MembranePoint& p) { return p.reference_thickness; }));
   {
     Q q = membrane("radius", Dimension::length, "current distance of the Gauss points from the z axis",
                    [](const MembranePoint& p) { return p.r; });

@@ -34,6 +34,21 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift) {
   auto m = std::make_unique<Model>(deck_model_);
   for (int n = 0; n < m->num_nodes(); ++n)
     for (int d = 0; d < m->dofs_per_node(); ++d) m->X[n](d) += shift(m->node_dof(n, d));
+  // A part whose `thickness` is the imaged one, h: its reference thickness at each Gauss point is
+  // the inverse step's H = h λ₁λ₂ at X = x̂ + shift (13.12), which the forward elements on X read
+  // (13.14). The Gauss-point states of the inverse problem give it, in System::points order.
+  int inverse_step = -1;
+  for (int s = 0; s < static_cast<int>(deck_model_.steps.size()); ++s)
+    if (deck_model_.steps[s].inverse) inverse_step = s;
+  std::unique_ptr<System> deck_system;
+  for (int p = 0; p < static_cast<int>(m->parts.size()); ++p) {
+    if (!m->parts[p].imaged_thickness || inverse_step < 0) continue;
+    if (model_ != &deck_model_ && !deck_system) deck_system = std::make_unique<System>(deck_model_);
+    const System& on_deck = deck_system ? *deck_system : *system_;
+    std::vector<double>& H = m->parts[p].point_thickness;
+    H.clear();
+    for (const MembranePoint& q : on_deck.points(shift, p, inverse_step)) H.push_back(q.reference_thickness);
+  }
   system_.reset();
   own_model_ = std::move(m);
   model_ = own_model_.get();

@@ -7,7 +7,10 @@
 //    nodes, by central differences, for the 3-node triangle, the 4-node quadrilateral and the
 //    6-node triangle, with each kind of material direction (fixed, about an axis, along the first
 //    edge), and for the axisymmetric membrane;
-// at random distorted reference elements and imaged states (stretches 0.8–1.6).
+// at random distorted reference elements and imaged states (stretches 0.8–1.6); and the same with
+// an imaged thickness h (theory manual (13.12)–(13.13)): the residual is the forward element's with
+// H_q = h λ₁λ₂ at each Gauss point, the imaged thickness λ₃H_q is h, and KX (with δw = 0) is the
+// Jacobian, for every element kind.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -83,7 +86,7 @@ Eigen::VectorXd flat(const SurfaceNodes<N>& x) {
 
 /// The worst relative error of KX against central differences over random states and each kind of direction.
 template <int N>
-double check_surface(const MembraneMaterial& material, std::mt19937& rng) {
+double check_surface(const MembraneMaterial& material, std::mt19937& rng, bool imaged = false) {
   double worst = 0;
   for (int k = 0; k < 6; ++k) {
     const FrameDirection dir = frame_direction(k);
@@ -100,13 +103,41 @@ double check_surface(const MembraneMaterial& material, std::mt19937& rng) {
     const SurfaceNodes<N> x = random_imaged<N>(rng, X);
     ElementVector<N> f, f_forward;
     ElementMatrix<N> KX;
-    membrane3d_inverse<N>(X, x, 0.13, dir, material, f, &KX);
-    // The same discrete equations: the forward element at the same reference and current nodes.
-    membrane3d<N>(membrane_reference<N>(X, 0.13, dir.rule<N>(X)), x, material, f_forward, nullptr);
-    EXPECT_EQ(f, f_forward) << "N=" << N << " k=" << k;
+    std::array<MembranePoint, SurfaceShapeTraits<N>::kPoints> pts;
+    std::array<double, SurfaceShapeTraits<N>::kPoints> h;
+    for (int q = 0; q < SurfaceShapeTraits<N>::kPoints; ++q) h[q] = 0.13 + 0.01 * q;  // a thickness map
+    const auto* hq = imaged ? &h : nullptr;
+    membrane3d_inverse<N>(X, x, 0.13, dir, material, f, &KX, hq, &pts);
+    // The same discrete equations: the forward element at the same reference and current nodes,
+    // with an imaged thickness h_q at H_q = h_q |g1 × g2|/|G1 × G2| (13.12).
+    MembraneReference<N> ref = membrane_reference<N>(X, 0.13, dir.rule<N>(X));
+    if (imaged) {
+      for (int q = 0; q < SurfaceShapeTraits<N>::kPoints; ++q) {
+        double xi, eta, wq;
+        gauss_point<N>(q, xi, eta, wq);
+        const Eigen::Matrix<double, N, 2> dN = shape_derivatives<N>(xi, eta);
+        const Eigen::Matrix<double, 3, 2> G = X * dN, g = x * dN;
+        const double Hq = h[q] * g.col(0).cross(g.col(1)).norm() / G.col(0).cross(G.col(1)).norm();
+        EXPECT_NEAR(pts[q].reference_thickness, Hq, 1e-14 * Hq) << "N=" << N << " k=" << k << " q=" << q;
+        EXPECT_NEAR(pts[q].thickness, h[q], 1e-12) << "N=" << N << " k=" << k << " q=" << q;  // λ₃ H_q = h_q
+      }
+      ElementVector<N> fq;
+      f_forward.setZero();
+      for (int q = 0; q < SurfaceShapeTraits<N>::kPoints; ++q) {
+        MembraneReference<N> one = membrane_reference<N>(X, pts[q].reference_thickness, dir.rule<N>(X));
+        for (int r = 0; r < SurfaceShapeTraits<N>::kPoints; ++r)
+          if (r != q) one.weight[r] = 0;
+        membrane3d<N>(one, x, material, fq, nullptr);
+        f_forward += fq;
+      }
+      EXPECT_LT((f - f_forward).norm(), 1e-12 * f.norm()) << "N=" << N << " k=" << k;
+    } else {
+      membrane3d<N>(ref, x, material, f_forward, nullptr);
+      EXPECT_EQ(f, f_forward) << "N=" << N << " k=" << k;
+    }
     const auto force = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
       ElementVector<N> g;
-      membrane3d_inverse<N>(nodes<N>(v), x, 0.13, dir, material, g, nullptr);
+      membrane3d_inverse<N>(nodes<N>(v), x, 0.13, dir, material, g, nullptr, hq);
       return g;
     };
     const double e = relative_error(KX, fd_jacobian(force, flat<N>(X), 1e-6));
@@ -137,7 +168,21 @@ TEST_P(InverseMembraneFd, SurfaceTangentIsTheJacobianOfTheForceInTheReferenceNod
               tunica::test::case_name({GetParam(), 0}).c_str(), e3, e4, e6);
 }
 
-TEST_P(InverseMembraneFd, AxisymmetricTangentIsTheJacobianOfTheForceInTheReferenceNodes) {
+TEST_P(InverseMembraneFd, ImagedThicknessSurfaceTangentIsTheJacobianOfTheForceInTheReferenceNodes) {
+  std::mt19937 rng(19);
+  const double e3 = check_surface<3>(*m, rng, true), e4 = check_surface<4>(*m, rng, true),
+               e6 = check_surface<6>(*m, rng, true);
+  tunica::test::record_error("max_rel_err_tri3", e3);
+  tunica::test::record_error("max_rel_err_quad4", e4);
+  tunica::test::record_error("max_rel_err_tri6", e6);
+  std::printf("inverse KX with an imaged thickness vs central differences, %s: tri3 %.2e, quad4 %.2e, tri6 %.2e\n",
+              tunica::test::case_name({GetParam(), 0}).c_str(), e3, e4, e6);
+}
+
+namespace {
+
+/// The worst relative error of the axisymmetric KX against central differences over random states.
+double check_axisymmetric(const MembraneMaterial& material, bool imaged) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(0, 1), s(-1, 1), stretch(0.8, 1.6);
   double worst = 0;
@@ -155,21 +200,53 @@ TEST_P(InverseMembraneFd, AxisymmetricTangentIsTheJacobianOfTheForceInTheReferen
     x += 0.02 * AxisymNodes::NullaryExpr([&] { return s(rng); });
     Eigen::Vector4d f, f_forward;
     Eigen::Matrix4d KX;
-    axisym_membrane_inverse(X, x, 0.11, *m, f, &KX);
-    axisym_membrane(X, x, 0.11, *m, f_forward, nullptr);
-    EXPECT_EQ(f, f_forward) << "state " << k;
+    std::array<MembranePoint, 2> pts;
+    const std::array<double, 2> h{0.11, 0.12};  // a thickness map
+    const auto* hq = imaged ? &h : nullptr;
+    axisym_membrane_inverse(X, x, 0.11, material, f, &KX, hq, &pts);
+    if (imaged) {
+      // H_q = h λ_s λ_θ (13.12), and the forward element with it; the imaged thickness λ₃H_q is h.
+      const double g = 0.5 / std::sqrt(3.0);
+      std::array<double, 2> Hq{};
+      for (int q = 0; q < 2; ++q) {
+        const double t = q == 0 ? 0.5 - g : 0.5 + g;
+        Hq[q] = h[q] * ((x.col(1) - x.col(0)).norm() / (X.col(1) - X.col(0)).norm()) *
+                (((1 - t) * x(0, 0) + t * x(0, 1)) / ((1 - t) * X(0, 0) + t * X(0, 1)));
+        EXPECT_NEAR(pts[q].reference_thickness, Hq[q], 1e-14 * Hq[q]) << "state " << k;
+        EXPECT_NEAR(pts[q].thickness, h[q], 1e-12) << "state " << k;
+      }
+      axisym_membrane(X, x, Hq, material, f_forward, nullptr);
+      EXPECT_LT((f - f_forward).norm(), 1e-13 * f.norm()) << "state " << k;
+    } else {
+      axisym_membrane(X, x, 0.11, material, f_forward, nullptr);
+      EXPECT_EQ(f, f_forward) << "state " << k;
+    }
     const auto force = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
       AxisymNodes Xv;
       Xv << v(0), v(2), v(1), v(3);
       Eigen::Vector4d g;
-      axisym_membrane_inverse(Xv, x, 0.11, *m, g, nullptr);
+      axisym_membrane_inverse(Xv, x, 0.11, material, g, nullptr, hq);
       return g;
     };
     const double e = relative_error(KX, fd_jacobian(force, Eigen::Vector4d(X(0, 0), X(1, 0), X(0, 1), X(1, 1)), 1e-6));
     EXPECT_LT(e, kFdTolerance) << "state " << k;
     worst = std::max(worst, e);
   }
+  return worst;
+}
+
+}  // namespace
+
+TEST_P(InverseMembraneFd, AxisymmetricTangentIsTheJacobianOfTheForceInTheReferenceNodes) {
+  const double worst = check_axisymmetric(*m, false);
   tunica::test::record_error("max_rel_err", worst);
   std::printf("inverse axisymmetric KX vs central differences, %s: %.2e\n", tunica::test::case_name({GetParam(), 0}).c_str(),
               worst);
+}
+
+TEST_P(InverseMembraneFd, ImagedThicknessAxisymmetricTangentIsTheJacobianOfTheForceInTheReferenceNodes) {
+  const double worst = check_axisymmetric(*m, true);
+  tunica::test::record_error("max_rel_err", worst);
+  std::printf("inverse axisymmetric KX with an imaged thickness vs central differences, %s: %.2e\n",
+              tunica::test::case_name({GetParam(), 0}).c_str(), worst);
 }

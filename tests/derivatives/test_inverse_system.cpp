@@ -62,3 +62,27 @@ TEST(InverseSystem, AssembledTangentIsTheJacobianOfTheAssembledResidual) {
   EXPECT_LT(eq, 1e-6);
   EXPECT_LT(et, 1e-6);
 }
+
+TEST(InverseSystem, AssembledTangentWithAnImagedThicknessIsTheJacobianOfTheAssembledResidual) {
+  // The same with `thickness_at: imaged` (theory manual (13.12)–(13.13)): H = h λ₁λ₂ at each Gauss point.
+  const auto imaged = [](const std::string& deck) {
+    const std::string t = replace(deck, "thickness: 0.01 mm", "thickness: 0.008 mm\n    thickness_at: imaged");
+    EXPECT_NE(t.find("thickness_at: imaged"), std::string::npos);
+    return t;
+  };
+  const std::string axisym = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml";
+  const std::string sphere = replace(read_text(axisym), "name: inflate", "name: zero_pressure\n    type: inverse");
+  const double ea = check(imaged(replace(sphere, "elements: 100", "elements: 12")), axisym, 0.01);
+  const std::string octant = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere-3d.yaml";
+  std::string t = replace(read_text(octant), "n: 8}", "n: 3}");
+  t = replace(t, "increments: 40\n    volume_control: {load: inflation, volume: 4.45 mm^3}",
+              "type: inverse\n    increments: 1\n    set: {inflation: 0.008 MPa}\n    #");
+  const double eq = check(imaged(t), octant, 0.01);
+  const double et = check(imaged(replace(t, "n: 3}", "n: 3, shape: triangle}")), octant, 0.01);
+  std::printf("inverse system tangent with an imaged thickness vs central differences: axisymmetric %.2e, octant quad4 "
+              "%.2e, tri3 %.2e\n",
+              ea, eq, et);
+  EXPECT_LT(ea, 1e-6);
+  EXPECT_LT(eq, 1e-6);
+  EXPECT_LT(et, 1e-6);
+}
