@@ -36,7 +36,8 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
     type.fail(fmt::format("contact pair '{}': an inverse step takes no contact (the imaged configuration's contact "
                           "forces are unknown)",
                           m.contacts.front().name));
-  if (step.solver.linear_solver == "cholmod")
+  // The fixed point's linear systems are the forward problem's (13.11), symmetric where it is.
+  if (step.solver.linear_solver == "cholmod" && step.inverse_method == Step::InverseMethod::direct)
     (node.has("solver") && node["solver"].has("linear_solver") ? node["solver"]["linear_solver"] : type)
         .fail("the tangent of an inverse step is not symmetric, and cholmod takes symmetric tangents only: use "
               "`linear_solver: auto` (UMFPACK for it) or umfpack");
