@@ -143,9 +143,21 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
     ForwardSolveCounter counter(observer);
     try {
       run_step(counter);
-    } catch (...) {
+    } catch (const SolveError& e) {
       // The message names the iteration (the copy's step name, adopt_reference); the state is the
       // step's start again, on the deck's model.
+      back_to_deck();
+      state_ = start;
+      throw SolveError(
+          std::string(e.what()) +
+          (k == 1 ? " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
+                    "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
+                    "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes no "
+                    "such detour"
+                  : fmt::format(" The forward solve of fixed-point iteration {} starts from the reference the update "
+                                "(13.12) gave; a `relaxation` below 1 (now {:g}) keeps the updates shorter",
+                                k, fp.relaxation)));
+    } catch (...) {
       back_to_deck();
       state_ = start;
       throw;
