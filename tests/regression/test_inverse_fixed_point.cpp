@@ -10,6 +10,7 @@
 //    `mesh: {type: arc}`), on which the direct method stagnates: what the fixed point does.
 //  - A fixed point that has not reached its tolerance after `fixed_point_iterations` stops with a
 //    message naming the step, the distance and the keys that help.
+//  - The output folder: fixed_point.csv (a row per iteration) and the reference file of the direct method.
 //  - The method's keys are refused on forward steps and, but for `method`, on the direct method.
 #include <gtest/gtest.h>
 
@@ -18,8 +19,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <sstream>
 
 #include "../support/capture.hpp"
+#include "../support/scratch.hpp"
+#include "output/run_writer.hpp"
 #include "core/errors.hpp"
 
 using namespace tunica;
@@ -355,4 +360,41 @@ TEST(FixedPointInverse, KeysBelongToTheFixedPointOfAnInverseStep) {
   EXPECT_TRUE(m.steps[0].fixed_point.aitken);
   EXPECT_EQ(m.steps[0].fixed_point.tolerance, 1e-6);
   EXPECT_EQ(m.steps[0].fixed_point.max_iterations, 50);
+}
+
+TEST(FixedPointInverse, OutputFolderHoldsFixedPointCsvAndTheReferenceFile) {
+  // examples/rat-aorta-inverse.yaml with `method: fixed_point` and Aitken, written by RunWriter.
+  const std::string text = replace(read_text(kRatInverse), "    type: inverse ",
+                                   "    method: fixed_point\n    acceleration: aitken\n    type: inverse ");
+  const Model m = read_deck_text(text, kRatInverse);
+  const std::string dir = scratch("fixed-point", "rat").string();
+  {
+    RunWriter writer(m, dir, nullptr);
+    Analysis a(m);
+    a.run(writer);
+  }
+  std::istringstream csv(read_text(dir + "/fixed_point.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "step,iteration,max_distance_mm,rms_distance_mm,goal_mm,relaxation,increments,newton_iterations,"
+                  "cutbacks,seconds");
+  int rows = 0;
+  std::string last;
+  while (std::getline(csv, line)) {
+    ++rows;
+    last = line;
+    EXPECT_EQ(line.rfind(fmt::format("1,{},", rows), 0), 0u) << line;
+  }
+  std::printf("fixed_point.csv: %d rows, the last %s\n", rows, last.c_str());
+  EXPECT_GE(rows, 2);
+  EXPECT_LE(rows, 10);
+  // The reference file of the direct method: node, R, Z of the load-free tube.
+  const std::string ref = read_text(dir + "/reference_zero_pressure.csv");
+  EXPECT_EQ(ref.rfind("node,R_mm,Z_mm\n", 0), 0u) << ref.substr(0, 40);
+  std::istringstream rin(ref);
+  std::getline(rin, line);
+  while (std::getline(rin, line)) {
+    const double R = std::stod(line.substr(line.find(',') + 1));
+    EXPECT_NEAR(R, 0.763, 1e-9) << line;
+  }
 }
