@@ -214,6 +214,17 @@ TEST(FixedPointInverse, AxisymmetricSphereNearsTheDirectMethodsXOnlyTo2e4AtThePo
     EXPECT_LT(plain.to_direct, 5e-4) << p;
     EXPECT_LT(plain.to_known, 5e-4) << p;
     EXPECT_GT(median_rate(plain.fixed.records), 0.9) << p;  // the slow mode sets the rate
+    // The radial mode's rate at first: |1 − J| with J = dr/dR at fixed p, (13.15), for the sphere of
+    // R = 1 mm: f(λ) = λ⁻¹ − λ⁻⁷ = pR/(2μH) below the maximum, J = λ + f/f′.
+    double lo = 1, hi = std::pow(7.0, 1.0 / 6.0);
+    const auto f = [](double l) { return 1 / l - std::pow(l, -7); };
+    for (int i = 0; i < 100; ++i) (f(0.5 * (lo + hi)) < p / 0.02 ? lo : hi) = 0.5 * (lo + hi);
+    const double lambda = 0.5 * (lo + hi);
+    const double J = lambda + f(lambda) / (-std::pow(lambda, -2) + 7 * std::pow(lambda, -8));
+    const double rate = plain.fixed.records[2].max_distance / plain.fixed.records[1].max_distance;
+    std::printf("  radial mode: lambda %.4f, closed-form rate |1 - J| = %.4f, measured (iteration 3 / 2) %.4f\n",
+                lambda, std::abs(1 - J), rate);
+    EXPECT_NEAR(rate, std::abs(1 - J), 0.03) << p;
   }
 }
 
