@@ -98,6 +98,8 @@ private:
 }  // namespace
 
 void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
+  // Resumed from the checkpoint at the step's end: X is in state_.u already.
+  if (state_.fraction >= 1.0 - 1e-12) return;
   const int s = state_.step;
   const Step& step = deck_model_.steps[s];
   const Step::FixedPoint& fp = step.fixed_point;

@@ -427,3 +427,48 @@ TEST(FixedPointInverse, OutputFolderHoldsFixedPointCsvAndTheReferenceFile) {
     EXPECT_NEAR(R, 0.763, 1e-9) << line;
   }
 }
+
+namespace {
+
+/// Keeps the checkpoint of the end of step 1.
+class KeepEndOfStepOne final : public AnalysisObserver {
+public:
+  Checkpoint kept;
+  void on_increment(const Analysis& a, const IncrementInfo& i) override {
+    if (i.step == 1 && i.fraction >= 1.0 - 1e-12) kept = a.checkpoint();
+  }
+};
+
+}  // namespace
+
+TEST(FixedPointInverse, ACompletedFixedPointRunContinuesWithAForwardStepAdded) {
+  // The checkpoint at the end of the fixed-point step (what its restart.txt holds) resumed with a deck
+  // that adds a forward step: no fixed-point iteration is redone, and the run ends as the whole deck does.
+  const std::string forward = axisym_deck(20, 0.008, 8);
+  const Model f = read_deck_text(forward, kAxisym);
+  Capture c0;
+  Analysis a0(f);
+  a0.run(c0);
+  const std::vector<Eigen::Vector3d> imaged = positions(f, a0.displacement());
+  const std::string inverse_only = inverse_of(forward, "inflate", "method: fixed_point\n    acceleration: aitken\n    fixed_point_tolerance: 1e-6");
+  Model first = read_deck_text(inverse_only, kAxisym);
+  first.X = imaged;
+  KeepEndOfStepOne keep;
+  Analysis a1(first);
+  a1.run(keep);
+  ASSERT_EQ(keep.kept.fraction, 1.0);
+  const std::string whole_text =
+      replace(inverse_only, "\noutput:", "\n  - name: more\n    increments: 4\n    set: {inflation: 0.01 MPa}\noutput:");
+  Model m = read_deck_text(whole_text, kAxisym);
+  m.X = imaged;
+  FixedPointCapture c2;
+  Analysis resumed(m);
+  resumed.run(c2, &keep.kept);
+  EXPECT_TRUE(c2.records.empty());
+  FixedPointCapture c3;
+  Analysis whole(m);
+  whole.run(c3);
+  EXPECT_FALSE(c3.records.empty());
+  EXPECT_EQ(resumed.displacement(), whole.displacement());
+  EXPECT_EQ(resumed.model().X, whole.model().X);
+}
