@@ -143,6 +143,37 @@ const ComponentSpec& step_spec() {
                                 "(their displacements are from that reference)"),
                            {"forward", "inverse"}),
                     "forward"),
+       with_default(one_of(text("method",
+                                "inverse steps: how the zero-pressure reference X is found (theory manual §13). "
+                                "`direct`: Newton on the inverse elements' equations for X (13.1), membrane parts "
+                                "only. `fixed_point`: backward displacement (§13.1): from X₀ = the imaged positions x̂, "
+                                "each iteration solves the ordinary forward problem from X_k to the step's loads (in "
+                                "its `increments`, with cut-backs) and moves X_{k+1} = X_k − ω (x(X_k) − x̂), until "
+                                "every node lands within `fixed_point_tolerance` of x̂; it costs a forward solve per "
+                                "iteration and its rate is linear, faster for a stiffer membrane. Each iteration "
+                                "is a row of fixed_point.csv"),
+                           {"direct", "fixed_point"}),
+                    "direct"),
+       with_default(positive(number("fixed_point_tolerance", Dimension::dimensionless,
+                                    "`method: fixed_point`: stop when the largest nodal distance |x(X_k) − x̂| is at "
+                                    "most this times the diagonal of the imaged geometry's bounding box")),
+                    "1e-8"),
+       with_default(at_most(at_least(integer("fixed_point_iterations",
+                                             "`method: fixed_point`: the most iterations (forward solves); a run "
+                                             "that has not reached `fixed_point_tolerance` after them stops (exit 3)"),
+                                     1),
+                            1e6),
+                    "50"),
+       with_default(at_most(positive(number("relaxation", Dimension::dimensionless,
+                                            "`method: fixed_point`: the factor ω of the update (13.16), or its first "
+                                            "value under `acceleration: aitken`")),
+                            2),
+                    "1"),
+       with_default(one_of(text("acceleration",
+                                "`method: fixed_point`: `none` (ω fixed) or `aitken` (ω from Aitken's Δ² each "
+                                "iteration, (13.17))"),
+                           {"none", "aitken"}),
+                    "none"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
        structured("set", "map", "boundary or load names → their values at the end of the step"),
        structured("volume_control", "map",
@@ -563,6 +594,21 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     Step s;
     s.name = p.text("name");
     s.inverse = p.text("type") == "inverse";
+    if (p.text("method") == "fixed_point") s.inverse_method = Step::InverseMethod::fixed_point;
+    s.fixed_point.tolerance = p.number("fixed_point_tolerance");
+    s.fixed_point.max_iterations = static_cast<int>(p.integer("fixed_point_iterations"));
+    s.fixed_point.relaxation = p.number("relaxation");
+    s.fixed_point.aitken = p.text("acceleration") == "aitken";
+    for (const char* key : {"method", "fixed_point_tolerance", "fixed_point_iterations", "relaxation", "acceleration"}) {
+      if (!node.has(key)) continue;
+      if (!s.inverse)
+        node[key].fail(fmt::format("`{}` is a key of inverse steps (`type: inverse`), and step '{}' is a forward step",
+                                   key, s.name));
+      if (std::string(key) != "method" && s.inverse_method != Step::InverseMethod::fixed_point)
+        node[key].fail(fmt::format("`{}` is a key of the fixed-point method: add `method: fixed_point` to step '{}' "
+                                   "(the default `method: direct` takes none)",
+                                   key, s.name));
+    }
     s.increments = static_cast<int>(p.integer("increments"));
     s.solver = read_solver(node["solver"], m.units, solver);
     if (node.has("set")) {

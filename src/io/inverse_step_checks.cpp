@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "contributions/element_type.hpp"
 
 namespace tunica {
@@ -36,7 +38,19 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
     type.fail(fmt::format("contact pair '{}': an inverse step takes no contact (the imaged configuration's contact "
                           "forces are unknown)",
                           m.contacts.front().name));
-  if (step.solver.linear_solver == "cholmod")
+  // The fixed point's forward problem ramps a prescribed value v to the displacement −v and a load to
+  // its value (13.15): a name that is a boundary and a load at once would take both.
+  if (step.inverse_method == Step::InverseMethod::fixed_point)
+    for (const auto& [name, value] : step.targets) {
+      const bool boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == name; });
+      const bool load = std::any_of(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == name; });
+      if (boundary && load)
+        node["set"][name].fail(fmt::format("'{}' names a boundary and a load: `method: fixed_point` sets them apart "
+                                           "(a prescribed value becomes the opposite displacement); rename one",
+                                           name));
+    }
+  // The fixed point's linear systems are the forward problem's (13.15), symmetric where it is.
+  if (step.solver.linear_solver == "cholmod" && step.inverse_method == Step::InverseMethod::direct)
     (node.has("solver") && node["solver"].has("linear_solver") ? node["solver"]["linear_solver"] : type)
         .fail("the tangent of an inverse step is not symmetric, and cholmod takes symmetric tangents only: use "
               "`linear_solver: auto` (UMFPACK for it) or umfpack");

@@ -227,6 +227,17 @@ struct Step {
   /// and the unknowns move the reference nodes, X = x̂ + u, so that the loads at their values
   /// are carried in x̂ (the zero-pressure geometry). Else a forward step.
   bool inverse = false;
+  /// How an inverse step finds X (theory manual §13): `direct`, Newton on the inverse residual of the
+  /// inverse elements (13.1)–(13.8); `fixed_point`, the backward-displacement iteration of §13.1,
+  /// X_{k+1} = X_k − ω_k (x(X_k) − x̂) with a forward solve from X_k per iteration (13.15).
+  enum class InverseMethod { direct, fixed_point } inverse_method = InverseMethod::direct;
+  /// The fixed point's settings (inverse_method == fixed_point).
+  struct FixedPoint {
+    double tolerance = 1e-8;   ///< stop at max_n |x(X_k) − x̂| ≤ tolerance × the imaged bounding-box diagonal
+    int max_iterations = 50;   ///< fixed-point iterations at most
+    double relaxation = 1.0;   ///< ω (the first ω under Aitken acceleration)
+    bool aitken = false;       ///< ω_k by Aitken's Δ² (13.17)
+  } fixed_point;
   int increments = 1;
   std::map<std::string, double> targets;  ///< boundary or load name → value at the end of the step
   /// Load name → where its target was written without a unit ("deck.yaml:27:19: key

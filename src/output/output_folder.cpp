@@ -11,7 +11,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::regex kTopFile(
-    "(history\\.csv|newton\\.csv|frames\\.csv|restart\\.txt|meridian\\.pvd|surface\\.pvd|reference_[A-Za-z0-9_-]+\\.(msh|csv))");
+    "(history\\.csv|newton\\.csv|frames\\.csv|fixed_point\\.csv|restart\\.txt|meridian\\.pvd|surface\\.pvd|reference_[A-Za-z0-9_-]+\\.(msh|csv))");
 const std::regex kFrame("(meridian|surface)_([0-9]{6,})\\.vtu");
 const std::regex kTemporary("(.*)\\.tmp\\.[0-9]+");
 

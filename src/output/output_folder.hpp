@@ -1,7 +1,7 @@
 #pragma once
 // The files Tunica itself writes into an output folder, and removing them.
 // Only these names are ever removed; any other file in the folder stays.
-//   history.csv, newton.csv, frames.csv, restart.txt, meridian.pvd, surface.pvd,
+//   history.csv, newton.csv, frames.csv, fixed_point.csv, restart.txt, meridian.pvd, surface.pvd,
 //   reference_<step>.msh and .csv (an inverse step's zero-pressure geometry, reference_mesh.hpp),
 //   vtk/meridian_NNNNNN.vtu, vtk/surface_NNNNNN.vtu,
 //   and the temporaries `<one of those>.tmp.<pid>` a killed run leaves behind.

@@ -133,6 +133,27 @@ void RunWriter::on_iteration(const IncrementInfo& info, const IterationRecord& r
                  info.increment, r.iteration, r.residual, r.relative_residual);
 }
 
+void RunWriter::on_fixed_point(const FixedPointRecord& rec) {
+  const std::string unit = model_.units.display_unit(Dimension::length);
+  const auto len = [&](double v) { return model_.units.from_internal(v, unit, Dimension::length); };
+  if (fixed_point_rows_.empty())
+    fixed_point_rows_ = fmt::format("step,iteration,max_distance_{0},rms_distance_{0},goal_{0},relaxation,increments,"
+                                    "newton_iterations,cutbacks,seconds\n",
+                                    unit);
+  fixed_point_rows_ += fmt::format("{},{},{:.6e},{:.6e},{:.6e},{:.6g},{},{},{},{:.3f}\n", rec.step, rec.iteration,
+                                   len(rec.max_distance), len(rec.rms_distance), len(rec.goal), rec.relaxation,
+                                   rec.increments, rec.newton_iterations, rec.cutbacks, rec.seconds);
+  write_file_atomically(dir_ + "/fixed_point.csv", fixed_point_rows_);
+  if (progress_) {
+    std::fprintf(progress_,
+                 "step %d '%s' fixed-point iteration %d: max |x - x^| = %.3e %s (rms %.3e, goal %.3e) after %d "
+                 "increment(s), %d Newton iteration(s), %.2f s\n",
+                 rec.step, rec.step_name.c_str(), rec.iteration, len(rec.max_distance), unit.c_str(),
+                 len(rec.rms_distance), len(rec.goal), rec.increments, rec.newton_iterations, rec.seconds);
+    std::fflush(progress_);
+  }
+}
+
 void RunWriter::on_cutback(const IncrementInfo& info, const std::string& why) {
   if (progress_)
     std::fprintf(progress_, "  step %d increment %d: %s; cutting the increment back\n", info.step, info.increment,

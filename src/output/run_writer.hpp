@@ -4,6 +4,7 @@
 //   newton.csv    one row per Newton iteration,
 //   meridian.pvd / surface.pvd and vtk/*.vtu   ParaView series (output.vtk_every),
 //   frames.csv    one row per .vtu frame file: its byte length and CRC-32,
+//   fixed_point.csv   one row per iteration of a fixed-point inverse step (Analysis, FixedPointRecord),
 // restart.txt (see restart_file.hpp) and the progress lines on the terminal.
 // The CSV files and the .pvd series are appended (append_file.hpp) and each frame
 // is written atomically. At a checkpoint all are synced, and then restart.txt is
@@ -40,6 +41,9 @@ public:
   void on_cutback(const IncrementInfo& info, const std::string& why) override;
   void on_retry(const IncrementInfo& info, const std::string& why, const std::string& how) override;
   void on_increment(const Analysis& analysis, const IncrementInfo& info) override;
+  /// A row of fixed_point.csv (rewritten whole, atomically: a fixed-point step is redone from its
+  /// start by a restart) and a progress line.
+  void on_fixed_point(const FixedPointRecord& rec) override;
   /// True once SIGINT or SIGTERM has been received.
   bool stop_requested() override;
   /// Appends the attempts since the last converged increment to newton.csv (for a run that stops).
@@ -67,6 +71,7 @@ private:
   std::FILE* progress_;
   std::string history_header_, newton_header_;
   std::string newton_pending_;  ///< rows since the last converged increment
+  std::string fixed_point_rows_;  ///< fixed_point.csv of the fixed-point inverse step
   int history_rows_ = 0, newton_rows_ = 0;
   long frames_ = 0;
   AppendFile history_, newton_, frames_csv_, meridian_pvd_, surface_pvd_;

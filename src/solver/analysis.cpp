@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,7 +26,7 @@ Analysis::Analysis(const Model& model)
 
 Analysis::~Analysis() = default;
 
-void Analysis::adopt_reference(const Eigen::VectorXd& shift) {
+void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int iteration) {
   if (shift.size() != deck_model_.num_dofs())
     throw std::invalid_argument(fmt::format("a reference shift of {} values for a model of {} DOFs", shift.size(),
                                             deck_model_.num_dofs()));
@@ -48,6 +49,15 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift) {
     std::vector<double>& H = m->parts[p].point_thickness;
     H.clear();
     for (const MembranePoint& q : on_deck.points(shift, p, inverse_step)) H.push_back(q.reference_thickness);
+  }
+  if (forward_of >= 0) {
+    // The forward problem of the fixed point (13.15): the loads to their imaged values, a prescribed
+    // value v of the inverse step (X = x̂ + v) to the displacement x̂ − X = −v.
+    Step& step = m->steps[forward_of];
+    step.inverse = false;
+    step.name = fmt::format("{} (fixed-point iteration {})", step.name, iteration);
+    for (const Boundary& b : m->boundaries)
+      if (auto it = step.targets.find(b.name); it != step.targets.end()) it->second = -it->second;
   }
   system_.reset();
   own_model_ = std::move(m);
@@ -72,6 +82,174 @@ void Analysis::leave_inverse_step() {
   state_.loads.step = state_.step + 1;
   update_volumes();
   update_reactions();
+}
+
+namespace {
+
+/// Counts what the forward solve of a fixed-point iteration does and passes its Newton iterations,
+/// cut-backs and retries on; its converged increments are not states of the run.
+class ForwardSolveCounter final : public AnalysisObserver {
+public:
+  explicit ForwardSolveCounter(AnalysisObserver& outer) : outer_(outer) {}
+  int increments = 0, newton_iterations = 0, cutbacks = 0;
+  void on_iteration(const IncrementInfo& i, const IterationRecord& r) override { outer_.on_iteration(i, r); }
+  void on_cutback(const IncrementInfo& i, const std::string& why) override {
+    ++cutbacks;
+    outer_.on_cutback(i, why);
+  }
+  void on_retry(const IncrementInfo& i, const std::string& why, const std::string& how) override {
+    outer_.on_retry(i, why, how);
+  }
+  void on_increment(const Analysis&, const IncrementInfo& i) override {
+    ++increments;
+    newton_iterations += i.iterations;
+  }
+  bool stop_requested() override { return outer_.stop_requested(); }
+
+private:
+  AnalysisObserver& outer_;
+};
+
+}  // namespace
+
+void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
+  // Resumed from the checkpoint at the step's end: X is in state_.u already.
+  if (state_.fraction >= 1.0 - 1e-12) return;
+  const int s = state_.step;
+  const Step& step = deck_model_.steps[s];
+  const Step::FixedPoint& fp = step.fixed_point;
+  const Checkpoint start = state_;
+  const Model& deck = deck_model_;
+  // The end of the step as the direct method reaches it: the loads at their imaged values, a
+  // prescribed value v holding X = x̂ + v (13.1).
+  LoadState end = start.step_start;
+  end.step = s;
+  for (std::size_t k = 0; k < deck.boundaries.size(); ++k)
+    if (auto it = step.targets.find(deck.boundaries[k].name); it != step.targets.end()) end.boundary[k] = it->second;
+  for (std::size_t k = 0; k < deck.loads.size(); ++k)
+    if (auto it = step.targets.find(deck.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
+  // The model's size: the diagonal of the imaged bounding box.
+  Eigen::Vector3d lo = deck.X.front(), hi = deck.X.front();
+  for (const auto& x : deck.X) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  const double goal = fp.tolerance * (hi - lo).norm();
+  const int dim = deck.dofs_per_node(), nodes = deck.num_nodes();
+  const auto back_to_deck = [&] {
+    system_.reset();
+    own_model_.reset();
+    model_ = &deck_model_;
+    system_ = std::make_unique<System>(*model_);
+    orientation_volume_.clear();
+    for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l)
+      orientation_volume_.push_back(volume_sign_is_orientation(*model_, l));
+  };
+  // X_0 = x̂ (shift 0); X_k = x̂ + shift.
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(deck.num_dofs()), previous;
+  double omega = fp.relaxation, max_distance = 0;
+  for (int k = 1;; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    adopt_reference(shift, s, k);
+    state_ = start;
+    state_.u.setZero(model_->num_dofs());
+    state_.loads = start.step_start;
+    state_.loads.step = state_.step_start.step = s;
+    update_volumes();
+    state_.step_start.volume = state_.loads.volume;
+    ForwardSolveCounter counter(observer);
+    try {
+      run_step(counter);
+    } catch (const SolveError& e) {
+      // The message names the iteration (the copy's step name, adopt_reference); the state is the
+      // step's start again, on the deck's model.
+      back_to_deck();
+      state_ = start;
+      throw SolveError(
+          std::string(e.what()) +
+          (k == 1 ? " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
+                    "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
+                    "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes no "
+                    "such detour"
+                  : fmt::format(" The forward solve of fixed-point iteration {} starts from the reference the update "
+                                "(13.16) gave; a `relaxation` below 1 (now {:g}) keeps the updates shorter",
+                                k, fp.relaxation)));
+    } catch (...) {
+      back_to_deck();
+      state_ = start;
+      throw;
+    }
+    // r_k = x(X_k) − x̂ = (X_k + u) − x̂ = shift + u, the fixed point's residual (13.15).
+    const Eigen::VectorXd r = shift + state_.u;
+    double sum = 0;
+    max_distance = 0;
+    for (int n = 0; n < nodes; ++n) {
+      double d2 = 0;
+      for (int c = 0; c < dim; ++c) d2 += r(deck.node_dof(n, c)) * r(deck.node_dof(n, c));
+      sum += d2;
+      max_distance = std::max(max_distance, std::sqrt(d2));
+    }
+    const bool converged = max_distance <= goal;
+    // Aitken's Δ² on the relaxation (13.17), from the second iteration on.
+    if (!converged && fp.aitken && previous.size() > 0) {
+      const Eigen::VectorXd dr = r - previous;
+      const double dd = dr.squaredNorm();
+      if (dd > 0) omega = -omega * previous.dot(dr) / dd;
+    }
+    FixedPointRecord rec;
+    rec.step = s + 1;
+    rec.step_name = step.name;
+    rec.iteration = k;
+    rec.max_distance = max_distance;
+    rec.rms_distance = std::sqrt(sum / nodes);
+    rec.goal = goal;
+    rec.relaxation = converged ? 0 : omega;
+    rec.increments = counter.increments;
+    rec.newton_iterations = counter.newton_iterations;
+    rec.cutbacks = counter.cutbacks;
+    rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    observer.on_fixed_point(rec);
+    if (converged) break;
+    if (k >= fp.max_iterations) {
+      back_to_deck();
+      state_ = start;
+      const std::string unit = deck.units.display_unit(Dimension::length);
+      const auto len = [&](double v) { return deck.units.from_internal(v, unit, Dimension::length); };
+      throw SolveError(fmt::format(
+          "step {} '{}' (inverse, method: fixed_point): after {} iteration(s) (fixed_point_iterations), the forward "
+          "solution from the last reference is still {:.4g} {} from the imaged positions at its farthest node "
+          "({:.4g} {} root mean square), above the tolerance {:.4g} {} (fixed_point_tolerance {:g} × the imaged "
+          "bounding-box diagonal {:.6g} {}). The files of the run so far are kept; fixed_point.csv lists the distance "
+          "per iteration. If it is still falling, raise `fixed_point_iterations` or try `acceleration: aitken` (or a "
+          "`relaxation` below 1 if it oscillates); if it stagnates, the imaged shape may not be an equilibrium shape "
+          "of the discrete membrane (theory manual §13), and a larger `fixed_point_tolerance` accepts the "
+          "nearest reference found",
+          s + 1, step.name, k, len(max_distance), unit, len(rec.rms_distance), unit, len(goal), unit, fp.tolerance,
+          len((hi - lo).norm()), unit));
+    }
+    previous = r;
+    // X_{k+1} = X_k − ω_k r_k (13.16); a prescribed DOF keeps X = x̂ + v exactly.
+    shift -= omega * r;
+    system_->apply_boundary(end, shift);
+  }
+  // The state the direct method ends in: u = X − x̂ on the deck's positions, at the step's loads.
+  back_to_deck();
+  state_ = start;
+  state_.u = shift;
+  state_.loads = end;
+  update_volumes();
+  state_.trace.restart_at(start.step_start);
+  state_.trace.push(state_.loads);
+  state_.fraction = 1;
+  state_.increment = 1;
+  update_reactions();
+  IncrementInfo info;
+  info.step = s + 1;
+  info.step_name = step.name;
+  info.increment = 1;
+  info.fraction = 1;
+  info.time = static_cast<double>(s) + 1;
+  observer.on_increment(*this, info);
 }
 
 std::string Analysis::eversion(const Eigen::VectorXd& u, int& load) const {
@@ -117,7 +295,11 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     observer.on_increment(*this, IncrementInfo{});
   }
   for (; state_.step < static_cast<int>(model_->steps.size()); ++state_.step) {
-    run_step(observer);
+    const Step& step = model_->steps[state_.step];
+    if (step.inverse && step.inverse_method == Step::InverseMethod::fixed_point)
+      run_fixed_point_step(observer);
+    else
+      run_step(observer);
     // An inverse step that is the last step keeps its own state (u = X − x̂ on the deck's positions).
     if (model_->steps[state_.step].inverse && state_.step + 1 < static_cast<int>(model_->steps.size()))
       leave_inverse_step();

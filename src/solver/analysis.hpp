@@ -53,6 +53,22 @@ struct Checkpoint {
 
 class Analysis;
 
+/// One iteration of a fixed-point inverse step (Step::InverseMethod::fixed_point; theory manual
+/// §13.1): the forward solve from the reference X_{k−1} to the imaged loads and its distance from x̂.
+struct FixedPointRecord {
+  int step = 0;                ///< 1-based
+  std::string step_name;
+  int iteration = 0;           ///< 1-based: the forward solve from X_{iteration−1}
+  double max_distance = 0;     ///< max over the nodes of |x(X_{k−1}) − x̂| (model length, internal units)
+  double rms_distance = 0;     ///< its root mean square over the nodes
+  double goal = 0;             ///< the distance that stops the iteration: tolerance × bounding-box diagonal
+  double relaxation = 0;       ///< ω_k applied after this iteration, (13.16)–(13.17)
+  int increments = 0;          ///< converged forward increments of the solve
+  int newton_iterations = 0;   ///< Newton iterations of its converged increments
+  int cutbacks = 0;            ///< its cut-backs
+  double seconds = 0;          ///< wall-clock time of the solve
+};
+
 /// What a run reports to (output writers, progress, tests).
 class AnalysisObserver {
 public:
@@ -65,6 +81,10 @@ public:
   virtual void on_increment(const Analysis&, const IncrementInfo&) {}
   /// Asked after each converged increment: true stops the run (Interrupted).
   virtual bool stop_requested() { return false; }
+  /// After each iteration of a fixed-point inverse step (the forward increments inside it report
+  /// their Newton iterations, cut-backs and retries, but not on_increment: the step's one converged
+  /// state is reported at its end, as the direct method's last increment).
+  virtual void on_fixed_point(const FixedPointRecord&) {}
 };
 
 /// The run stopped on request (a signal) after a converged increment.
@@ -110,7 +130,14 @@ private:
   std::string eversion(const Eigen::VectorXd& u, int& load) const;
   /// Makes the model's reference the deck's positions shifted by `shift` (X = x̂ + shift, all DOFs):
   /// model() becomes a copy of the deck's model with that X and system() is rebuilt on it.
-  void adopt_reference(const Eigen::VectorXd& shift);
+  /// `forward_of` ≥ 0: that inverse step of the copy becomes the forward problem of its fixed point
+  /// (13.15): a forward step ramping the loads to their imaged values and each prescribed value v
+  /// to the displacement −v, named after the fixed-point iteration `iteration`.
+  void adopt_reference(const Eigen::VectorXd& shift, int forward_of = -1, int iteration = 0);
+  /// Inverse step `state_.step` by the fixed point of theory manual §13.1: forward solves from
+  /// X_k (run_step on the copy of adopt_reference) and X_{k+1} = X_k − ω_k (x(X_k) − x̂), (13.16);
+  /// ends in the state the direct method ends in (u = X − x̂ on the deck's model, the step's loads).
+  void run_fixed_point_step(AnalysisObserver& observer);
   /// The end of inverse step `s`: the reference becomes the computed X (adopt_reference), the
   /// state u = x̂ − X and the prescribed values the same displacements on the new reference,
   /// at the step's loads (theory manual (13.10)).

@@ -74,8 +74,9 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
     return " Hint: an inverse step finds a reference only for an imaged mesh that the discrete membrane can carry "
            "(close to a deformed state of it: the deformed mesh of a forward run, a uniform tube). A mesh laid on an "
            "ideal or segmented surface asks for tensions set by its discrete curvature, which node positions off by "
-           "O(h²) change by O(1): it stalls, earlier the finer it is. Use a coarser or smoothed imaged mesh, or check "
-           "the pressure against what the imaged shape carries (user guide §3.5).";
+           "O(h²) change by O(1): it stalls, earlier the finer it is. Use a coarser or smoothed imaged mesh, or "
+           "`method: fixed_point`, which finds the reference whose forward solution comes nearest the imaged mesh, or "
+           "check the pressure against what the imaged shape carries (user guide §3.5).";
   // A load the step raises that was written without a unit (the reader warned): a bare `150` is
   // 150 N/mm² in mm and N, a million mmHg, beyond what any membrane carries; this comes first.
   for (const auto& [load, written] : step.unitless_loads) {
