@@ -52,7 +52,7 @@ struct SurfaceMembraneKernel : SpaceKinematics<N> {
     h.fill(part.thickness);
     if (!part.imaged_point_thickness.empty())
       for (int q = 0; q < SurfaceShapeTraits<N>::kPoints; ++q)
-        h[q] = part.imaged_point_thickness.at(static_cast<std::size_t>(first_element + e) * h.size() + q);
+        h[q] = part.imaged_point_thickness.at(first_point_of(part, block) + static_cast<std::size_t>(e) * h.size() + q);
     return h;
   }
   void inverse_points(int e, const State& s, const Vector& ue, std::vector<MembranePoint>& out) const {

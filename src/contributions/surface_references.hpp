@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contributions/element_type.hpp"
 #include "elements/membrane3d.hpp"
 #include "elements/membrane3d_inverse.hpp"
 #include "model/model.hpp"
@@ -19,6 +20,17 @@ DirectionRule direction_rule(const Model& model, const FrameRule& frame, const E
 /// (elements/membrane3d_inverse.hpp): the edge rule follows the element's first edge as X moves.
 FrameDirection frame_direction(const Model& model, const FrameRule& frame, const ElementBlock& block, int e);
 
+/// The index of the block's first Gauss point among the part's, in System::points order (blocks of
+/// a part may differ in their points per element: triangles and quadrilaterals of one surface).
+inline std::size_t first_point_of(const Part& part, const ElementBlock& block) {
+  std::size_t k = 0;
+  for (const ElementBlock& b : part.blocks) {
+    if (&b == &block) break;
+    k += static_cast<std::size_t>(b.size()) * static_cast<std::size_t>(element_type(b.kind).points_per_element(part));
+  }
+  return k;
+}
+
 /// Reference data of every element of a 3-D block of N-node elements. Throws
 /// BadElement whose message names the element (as in the mesh file, else 0-based within
 /// the part, in block order) and says what is wrong.
@@ -28,6 +40,7 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
   std::vector<MembraneReference<N>> out;
   out.reserve(block.size());
   SurfaceNodes<N> X;
+  const std::size_t first_point = part.point_thickness.empty() ? 0 : first_point_of(part, block);
   for (int e = 0; e < block.size(); ++e) {
     const int* n = block.element(e);
     for (int a = 0; a < N; ++a) X.col(a) = model.X[n[a]];
@@ -37,7 +50,7 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
       if (!part.point_thickness.empty()) {
         MembraneReference<N>& ref = out.back();
         for (int q = 0; q < MembraneReference<N>::Q; ++q) {
-          const double H = part.point_thickness.at(static_cast<std::size_t>(first_element + e) * MembraneReference<N>::Q + q);
+          const double H = part.point_thickness.at(first_point + static_cast<std::size_t>(e) * MembraneReference<N>::Q + q);
           ref.weight[q] *= H / ref.thickness[q];
           ref.thickness[q] = H;
         }

@@ -150,7 +150,18 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   double omega = fp.relaxation, max_distance = 0;
   for (int k = 1;; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
-    adopt_reference(shift, s, k);
+    try {
+      adopt_reference(shift, s, k);
+    } catch (const std::domain_error& e) {
+      // The update (13.16) folded an element of the reference: the run stops as a failed solve does.
+      back_to_deck();
+      state_ = start;
+      throw SolveError(fmt::format(
+          "step {} '{}', fixed-point iteration {}: the reference the update (13.16) gave is inadmissible ({}). A "
+          "`relaxation` below 1 (now {:g}{}) keeps the updates shorter",
+          s + 1, deck.steps[s].name, k, e.what(), fp.relaxation,
+          fp.aitken ? fmt::format(", and the last Aitken factor was {:g}", omega) : std::string()));
+    }
     state_ = start;
     state_.u.setZero(model_->num_dofs());
     state_.loads = start.step_start;
@@ -194,7 +205,9 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
     if (!converged && fp.aitken && previous.size() > 0) {
       const Eigen::VectorXd dr = r - previous;
       const double dd = dr.squaredNorm();
-      if (dd > 0) omega = -omega * previous.dot(dr) / dd;
+      // Kept above 0.05: a factor at or below 0 stalls or reverses the update (slow modes may ask for
+      // factors well above 1, which Aitken's estimate gives them).
+      if (dd > 0) omega = std::max(-omega * previous.dot(dr) / dd, 0.05);
     }
     FixedPointRecord rec;
     rec.step = s + 1;

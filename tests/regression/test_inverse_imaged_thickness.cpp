@@ -323,3 +323,37 @@ TEST(InverseImagedThickness, ARestartPastTheInverseStepHasTheSameReferenceThickn
   EXPECT_EQ(resumed.displacement(), whole.displacement());
   EXPECT_FALSE(resumed.model().parts[0].point_thickness.empty());
 }
+
+TEST(InverseImagedThickness, APartOfTrianglesAndQuadrilateralsTakesItsReferenceThicknessPointByPoint) {
+  // One surface of a triangle (1 Gauss point) and a quadrilateral (4), as a Gmsh surface with
+  // partial recombination gives: H per Gauss point (13.14) in System::points order, block by block.
+  const std::filesystem::path dir = scratch("imaged-thickness-mixed");
+  std::ofstream(dir / "mixed.msh")
+      << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 10 \"edge\"\n2 1 \"wall\"\n$EndPhysicalNames\n"
+         "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 1 1 0.2\n4 0 1 0\n5 2 0 0.1\n6 2 1 0\n$EndNodes\n$Elements\n3\n"
+         "1 1 2 10 1 1 4\n2 2 2 1 1 1 2 3\n3 3 2 1 1 2 5 6 3\n$EndElements\n";
+  const std::string deck = R"(title: mixed surface
+units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+parts:
+  wall:
+    element: membrane
+    material: rubber
+    thickness: 0.1 mm
+    mesh: {type: gmsh, file: mixed.msh, surface: wall}
+boundary:
+  fixed: {node_set: edge, dofs: [x, y, z]}
+steps:
+  - {name: s, increments: 1, set: {}}
+)";
+  Model m = read_deck_text(deck, (dir / "mixed.yaml").string());
+  ASSERT_EQ(m.parts[0].blocks.size(), 2u);
+  std::vector<double> H;
+  for (int k = 0; k < 5; ++k) H.push_back(0.1 + 0.01 * k);
+  m.parts[0].point_thickness = H;
+  const System system(m);
+  const auto points = system.points(Eigen::VectorXd::Zero(m.num_dofs()), 0);
+  ASSERT_EQ(points.size(), 5u);
+  for (std::size_t k = 0; k < points.size(); ++k) EXPECT_DOUBLE_EQ(points[k].reference_thickness, H[k]) << k;
+}
