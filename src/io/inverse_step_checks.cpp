@@ -41,7 +41,8 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
   // The fixed point's forward problem ramps a prescribed value v to the displacement −v and a load to
   // its value (13.15): a name that is a boundary and a load at once would take both.
   if (step.inverse_method == Step::InverseMethod::fixed_point)
-    for (const auto& [name, value] : step.targets) {
+    for (const auto& target : step.targets) {
+      const std::string& name = target.first;  // a named variable: lambdas may not capture a structured binding (clang)
       const bool boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == name; });
       const bool load = std::any_of(m.loads.begin(), m.loads.end(), [&](auto& l) { return l.name == name; });
       if (boundary && load)
