@@ -217,7 +217,7 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   // an unstressed membrane resists motion out of its surface only through its curvature.
   // A load the step raises that pushes its surface inward from the start (the run warned): the
   // likely cause, before any advice on the stress-free start.
-  if (hints.empty() && &step == &model.steps.front() && converged.count() == 1) {
+  if (hints.empty() && !model.steps.empty() && &step == &model.steps.front() && converged.count() == 1) {
     const LoadState& start = converged.first(0);
     for (std::size_t l = 0; l < model.loads.size() && l < start.volume.size(); ++l) {
       const PressureLoad& load = model.loads[l];
@@ -231,7 +231,7 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
       return hints;
     }
   }
-  if (hints.empty() && &step == &model.steps.front() && converged.count() == 1)
+  if (hints.empty() && !model.steps.empty() && &step == &model.steps.front() && converged.count() == 1)
     add(step.solver.stiffen_stress_free_start
             ? "no increment converged from the stress-free reference state, where an unstressed membrane resists "
               "motion out of its surface only through its curvature. Apply a little pressure together with a "
