@@ -325,6 +325,13 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
   }
 }
 
+std::string Analysis::contact_hints(const NewtonResult& last, int step) const {
+  // A slave coarser than its master where they touch is the more specific cause; else what the
+  // failed attempt's active set did (failure_hints.hpp).
+  const std::string coarse = contact_resolution_hints(*system_, state_.u, step);
+  return coarse.empty() ? contact_convergence_hint(*system_, state_.u, model_->steps[step], step, last) : coarse;
+}
+
 void Analysis::run_step(AnalysisObserver& observer) {
   const int s = state_.step;
   const Step& step = model_->steps[s];
@@ -420,7 +427,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
             info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
             (everted_load >= 0 ? eversion_hint(*model_, everted_load)
                                : failure_hints(*model_, step, r, state_.trace, trial)) +
-                contact_resolution_hints(*system_, state_.u, s)));
+                contact_hints(r, s)));
       }
       observer.on_cutback(info, why);
       ++cutbacks;

@@ -128,6 +128,9 @@ private:
   /// volume_sign_is_orientation) has the other sign than at the last converged state, so the
   /// surface passed through itself. `load` receives that load.
   std::string eversion(const Eigen::VectorXd& u, int& load) const;
+  /// The contact hints of a stopped increment (solver/failure_hints.hpp) at the last converged state:
+  /// a slave coarser than its master, else what the failed attempt `last`'s active set did.
+  std::string contact_hints(const NewtonResult& last, int step) const;
   /// Makes the model's reference the deck's positions shifted by `shift` (X = x̂ + shift, all DOFs):
   /// model() becomes a copy of the deck's model with that X and system() is rebuilt on it.
   /// `forward_of` ≥ 0: that inverse step of the copy becomes the forward problem of its fixed point

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -286,6 +287,102 @@ std::string contact_resolution_hints(const System& system, const Eigen::VectorXd
         pair.name, active, span / gaps, pair.master_name);
   }
   return hints;
+}
+
+}  // namespace tunica
+
+namespace tunica {
+
+namespace {
+
+/// The largest in-plane tension σ₁h of a membrane part at u (force per length), or −1 for a part
+/// without membrane points (a solid).
+double largest_tension(const System& system, const Eigen::VectorXd& u, int part, int step) {
+  const std::vector<MembranePoint> points = system.points(u, part, step);
+  if (points.empty()) return -1;
+  double t = 0;
+  for (const MembranePoint& q : points) t = std::max(t, q.sigma_principal(0) * q.thickness);
+  return t;
+}
+
+/// The membrane part that holds the first node of a chain, or −1.
+int part_of_chain(const Model& m, const std::vector<int>& chain) {
+  if (chain.empty()) return -1;
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    const Part& part = m.parts[p];
+    if (part.is_solid()) continue;
+    if (std::find(part.nodes.begin(), part.nodes.end(), chain.front()) != part.nodes.end()) return static_cast<int>(p);
+  }
+  return -1;
+}
+
+}  // namespace
+
+std::string contact_convergence_hint(const System& system, const Eigen::VectorXd& u, const Step& step, int step_index,
+                                     const NewtonResult& last) {
+  const Model& m = system.model();
+  // The pairs in play in this step, as the deck names them (a reverse pass belongs to its pair).
+  std::vector<int> pairs;
+  for (std::size_t c = 0; c < m.contacts.size(); ++c) {
+    const ContactPair& pair = m.contacts[c];
+    if (pair.is_reverse_pass()) continue;
+    if (pair.part >= 0 && !m.part_active(pair.part, step_index)) continue;
+    if (const int master = part_of_chain(m, pair.master); master >= 0 && !m.part_active(master, step_index)) continue;
+    pairs.push_back(static_cast<int>(c));
+  }
+  if (pairs.empty()) return "";
+  std::string names;
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    names += fmt::format("{}'{}'", k == 0 ? "" : k + 1 == pairs.size() ? " and " : ", ", m.contacts[pairs[k]].name);
+  const bool contact_in_play = last.active_contacts > 0 || last.active_set_changes > 0;
+  std::string slack;
+  for (int c : pairs) {
+    const ContactPair& pair = m.contacts[c];
+    if (!pair.deformable()) continue;
+    const int master = part_of_chain(m, pair.master);
+    if (master < 0 || pair.part < 0) continue;
+    const double tm = largest_tension(system, u, master, step_index);
+    const double ts = largest_tension(system, u, pair.part, step_index);
+    if (tm < 0 || !(ts > 0) || tm > kSlackMasterTension * ts) continue;
+    const std::string fu = m.units.display_unit(Dimension::force), lu = m.units.display_unit(Dimension::length);
+    const std::string unit = fu + "/" + lu;
+    const auto tension = [&](double v) {
+      return m.units.from_internal(v, fu, Dimension::force) / m.units.from_internal(1.0, lu, Dimension::length);
+    };
+    slack += fmt::format(
+        " The master of pair '{}', part '{}', carries almost no tension at the last converged state (its largest "
+        "tension {:.3g} {} against {:.3g} {} in the slave '{}'): a membrane without tension has no stiffness against "
+        "its nodes moving across its surface, and the slave nodes' penalty forces push them in and out at every "
+        "iteration. Give '{}' the tension it has in the body before this step (an artery's axial prestretch, as the "
+        "`prestretch` step of examples/balloon-angioplasty.yaml).",
+        pair.name, m.parts[master].name, tension(tm), unit, tension(ts), unit, m.parts[pair.part].name,
+        m.parts[master].name);
+  }
+  // Volume control takes the bordered correction (7.5) whole: no line search (7.4) halves one that
+  // drives slave nodes deep into the surface, whose penalty forces (9.3) then overflow the residual.
+  if (step.volume_control.load >= 0 && contact_in_play && last.failure == "the residual is not finite")
+    return fmt::format(
+        " Hint: under volume control each correction is taken whole (no line search halves it, theory manual (7.5)), "
+        "and with contact pair(s) {} active ({} slave node(s) at the last iterate, the active set changed at {} of its "
+        "{} iterations) a correction drove slave nodes deep into their surface, where the penalty forces grew until "
+        "the residual was no longer finite.{} A smaller `penalty` makes the contact softer, at the price of a deeper "
+        "penetration (p_c/ε, user guide §3.2, choosing ε); more `increments` in this step push the contact less far "
+        "in each volume step.",
+        names, last.active_contacts, last.active_set_changes, last.iterations, slack);
+  // Chattering, or contact on a master without tension (whose nodes a full correction moves in
+  // and out of contact even when the line search keeps the active set).
+  if (last.active_set_changes < kContactChatterIterations && (slack.empty() || last.active_contacts == 0)) return "";
+  bool deformable = false;
+  for (int c : pairs) deformable = deformable || m.contacts[c].deformable();
+  return fmt::format(
+      " Hint: the failed attempt had slave nodes in contact ({} at its last iterate, pair(s) {}), and the contact "
+      "active set changed at {} of its {} iterations: Newton did not settle which slave nodes touch, and cutting "
+      "the increment back did not help.{} {}A smaller `penalty` makes the contact softer, at the price of a deeper "
+      "penetration (p_c/ε, user guide §3.2, choosing ε).",
+      last.active_contacts, names, last.active_set_changes, last.iterations, slack,
+      deformable ? "For a deformable pair, `passes: 2` holds the master's nodes off the slave too, and a finer slave "
+                   "mesh spreads the contact over more nodes (theory manual §9.1). "
+                 : "");
 }
 
 }  // namespace tunica

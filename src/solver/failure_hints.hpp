@@ -61,4 +61,27 @@ constexpr double kCoarseSlaveSpacing = 1.5;
 /// manual §9.1, one pass). It names the remedies: a finer slave mesh, or the reverse pass.
 std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step);
 
+/// The contact active set changed at this many iterations of the failed attempt (or more): Newton
+/// did not settle which slave nodes touch (chattering).
+constexpr int kContactChatterIterations = 3;
+
+/// A membrane master whose largest tension is below this fraction of its slave's carries almost no
+/// tension (a stress-free artery before its prestretch).
+constexpr double kSlackMasterTension = 1e-3;
+
+/// Empty, or one hint for an attempt that failed with contact in play (`last`: the failed attempt,
+/// `u`: the last converged state, `step` 0-based):
+///  - the residual became non-finite in a volume-controlled step with active contact nodes: the
+///    bordered correction (theory manual (7.5)) is taken whole, with no line search (7.4) to halve a
+///    correction that drives slave nodes deep into the surface; more `increments`, a smaller
+///    `penalty`, or pressure control up to the contact;
+///  - else the active set changed at kContactChatterIterations or more of its iterations
+///    (NewtonResult::active_set_changes): names each deformable pair of the step, and where its master
+///    membrane carries almost no tension at u (largest σ₁h below kSlackMasterTension of the
+///    slave's), that it has no stiffness against the motion of its nodes across its surface, which
+///    the penalty forces (theory manual (9.3), (9.5)) push in and out: give it its tension first (an
+///    artery's axial prestretch), `passes: 2`, a finer slave, a smaller `penalty`.
+std::string contact_convergence_hint(const System& system, const Eigen::VectorXd& u, const Step& step, int step_index,
+                                     const NewtonResult& last);
+
 }  // namespace tunica

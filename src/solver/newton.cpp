@@ -79,6 +79,8 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
       return result;
     }
     problem.describe(rec);
+    if (rec.active_changes > 0) ++result.active_set_changes;
+    result.active_contacts = rec.active_contacts;
     rec.assembly_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     previous_residual = rec.residual;
     if (k == 0 || (problem.yardstick_after_first_correction() && k == 1)) r0 = std::max(r0, rec.residual);

@@ -46,6 +46,10 @@ struct NewtonResult {
   double last_force_scale = 0;  ///< the forces that cancel in that R (NonlinearProblem::evaluate)
   bool residual_falling = false;  ///< ‖R‖ fell in each of the last two iterations
   int perturbed = 0;  ///< iterations whose singular tangent was solved with a perturbed diagonal
+  /// Iterations of the attempt whose contact active set differed from the iteration before's
+  /// (IterationRecord::active_changes > 0), and the active contact nodes at its last residual.
+  int active_set_changes = 0;
+  int active_contacts = 0;
   /// The attempt stopped on a singular tangent (`failure` says so; why, the model's holds or the
   /// load, is for the caller to tell: solver/failure_hints.hpp).
   bool singular = false;
