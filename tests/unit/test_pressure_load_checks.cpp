@@ -11,6 +11,7 @@
 #include "../support/deck_files.hpp"
 #include "../support/sphere_octant.hpp"
 #include "assembly/pressure_load_checks.hpp"
+#include "assembly/volume_control_checks.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -144,4 +145,17 @@ TEST(PressureLoadChecks, AHoleInAWallIsAnUnheldChainOfOpenEdges) {
   Model free = plate(true);
   free.boundaries.clear();
   EXPECT_EQ(unheld_open_edges(free, 0).size(), 2u);
+}
+
+TEST(VolumeControlWarnings, ATargetBelowTheStressFreeVolumeIsWarnedAtItsKey) {
+  // Issue #17 C3: the balloon octant (stress-free volume π/6 mm³) asked to deflate to 0.4 mm³.
+  const std::string path = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere-3d.yaml";
+  const std::string text = read_text(path);
+  const std::string below = replace(text, "volume: 4.45 mm^3}", "volume: 0.4 mm^3}");
+  const std::vector<std::string> w = volume_control_warnings(System(read_deck_text(below, path)));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("key 'steps[0].volume_control.volume'"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("to 0.4 mm³, below its stress-free volume, 0.521"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("compresses it"), std::string::npos) << w[0];
+  EXPECT_TRUE(volume_control_warnings(System(read_deck_text(text, path))).empty());
 }
