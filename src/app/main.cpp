@@ -43,6 +43,8 @@ void print_warnings(const tunica::System& system) {
     std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
   for (const std::string& w : tunica::pressure_load_warnings(system))
     std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
+  for (const std::string& w : tunica::volume_control_warnings(system))
+    std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
 }
 
 int run(const std::string& deck, std::string out, const std::string& restart, bool quiet,

@@ -41,4 +41,34 @@ void check_volume_control_sides(const System& system) {
   }
 }
 
+std::vector<std::string> volume_control_warnings(const System& system) {
+  std::vector<std::string> out;
+  const Model& m = system.model();
+  const Eigen::VectorXd u0 = Eigen::VectorXd::Zero(system.num_dofs());
+  const std::string unit = m.units.display_unit(Dimension::volume);
+  const auto vol = [&](double v) { return m.units.from_internal(v, unit, Dimension::volume); };
+  for (std::size_t s = 0; s < m.steps.size(); ++s) {
+    const VolumeControl& vc = m.steps[s].volume_control;
+    if (vc.load < 0) continue;
+    double V0 = 0;
+    try {
+      V0 = system.volume(u0, vc.load);
+    } catch (const std::exception&) {
+      continue;
+    }
+    // A negative V₀ is check_volume_control_sides's error; a target within round-off of V₀ is none.
+    if (!(V0 > 0) || !(vc.target < V0 * (1 - 1e-9))) continue;
+    const PressureLoad& load = m.loads[vc.load];
+    out.push_back(format_location(
+        vc.where,
+        fmt::format("step {} '{}' controls the volume of load '{}' to {:.6g} {}, below its stress-free volume, "
+                    "{:.6g} {} (its enclosed volume at the reference state, as `volume` in history.csv reports it): "
+                    "deflating a membrane below its rest volume needs a negative pressure (a suction) and "
+                    "compresses it, and a real membrane wrinkles or buckles there, which Tunica does not model "
+                    "(user guide §5, compression). To inflate, give `volume_control.volume` a value above {:.6g} {}",
+                    s + 1, m.steps[s].name, load.name, vol(vc.target), unit, vol(V0), unit, vol(V0), unit)));
+  }
+  return out;
+}
+
 }  // namespace tunica

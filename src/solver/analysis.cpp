@@ -18,6 +18,7 @@ Analysis::Analysis(const Model& model)
   state_.loads.boundary.assign(model.boundaries.size(), 0.0);
   state_.loads.pressure.assign(model.loads.size(), 0.0);
   update_volumes();
+  reference_volume_ = state_.loads.volume;
   state_.step_start = state_.loads;
   reactions_.setZero(model.num_dofs());
   for (int l = 0; l < static_cast<int>(model.loads.size()); ++l)
@@ -64,8 +65,11 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int
   model_ = own_model_.get();
   system_ = std::make_unique<System>(*model_);
   orientation_volume_.clear();
-  for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l)
+  reference_volume_.clear();
+  for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l) {
     orientation_volume_.push_back(volume_sign_is_orientation(*model_, l));
+    reference_volume_.push_back(system_->volume(Eigen::VectorXd::Zero(model_->num_dofs()), l));
+  }
 }
 
 void Analysis::leave_inverse_step() {
@@ -142,8 +146,11 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
     model_ = &deck_model_;
     system_ = std::make_unique<System>(*model_);
     orientation_volume_.clear();
-    for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l)
+    reference_volume_.clear();
+    for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l) {
       orientation_volume_.push_back(volume_sign_is_orientation(*model_, l));
+      reference_volume_.push_back(system_->volume(Eigen::VectorXd::Zero(model_->num_dofs()), l));
+    }
   };
   // X_0 = x̂ (shift 0); X_k = x̂ + shift.
   Eigen::VectorXd shift = Eigen::VectorXd::Zero(deck.num_dofs()), previous;
@@ -421,13 +428,25 @@ void Analysis::run_step(AnalysisObserver& observer) {
       // halvings carried over from earlier increments: time always advances.
       const double min_dt = nominal * std::ldexp(1.0, -step.solver.max_cutbacks);
       if (cutbacks >= step.solver.max_cutbacks || 0.5 * dt < min_dt * (1 - 1e-12)) {
+        // With `max_cutbacks: 0` nothing was cut back: the increment is the step's nominal one.
+        const std::string size =
+            step.solver.max_cutbacks == 0
+                ? fmt::format("no convergence with the step's increment of {:.3g} of the step (`max_cutbacks: 0` in "
+                              "`solver` allows no cut-back: a positive value halves a failed increment)",
+                              dt)
+                : fmt::format("no convergence with the increment cut back to {:.3g} of the step ({} cut-back(s) "
+                              "allowed)",
+                              dt, step.solver.max_cutbacks);
+        std::string hint = everted_load >= 0
+                               ? eversion_hint(*model_, everted_load)
+                               : failure_hints(*model_, step, r, state_.trace, trial, reference_volume_);
+        const std::string contact = contact_hints(r, s);
+        // No other evidence: the last converged state's compression, theory manual (7.13).
+        if (hint.empty() && contact.empty()) hint = compression_hint(*system_, state_.u, step, s, state_.trace);
         throw SolveError(fmt::format(
-            "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; no convergence with the increment cut "
-            "back to {:.3g} of the step ({} cut-back(s) allowed). Results of the converged increments are kept.{}",
-            info.step, step.name, info.increment, t, dt, why, dt, step.solver.max_cutbacks,
-            (everted_load >= 0 ? eversion_hint(*model_, everted_load)
-                               : failure_hints(*model_, step, r, state_.trace, trial)) +
-                contact_hints(r, s)));
+            "step {} '{}', increment {} (step fraction {:.9g} + {:.3g}): {}; {}. Results of the converged increments "
+            "are kept.{}",
+            info.step, step.name, info.increment, t, dt, why, size, hint + contact));
       }
       observer.on_cutback(info, why);
       ++cutbacks;

@@ -153,6 +153,7 @@ private:
   Checkpoint state_;
   Eigen::VectorXd reactions_;
   std::vector<char> orientation_volume_;  ///< per load: volume_sign_is_orientation
+  std::vector<double> reference_volume_;  ///< per load: its enclosed volume at the stress-free reference
   SolverFactory solver_factory_ = make_linear_solver;
 };
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "assembly/pressure_load_checks.hpp"
+#include "elements/membrane_compression.hpp"
 #include "materials/membrane_material.hpp"
 #include "model/rigid_motion_check.hpp"
 
@@ -66,7 +67,7 @@ std::string held_singular_hint(const Model& model, const Step& step, const StepT
 }  // namespace
 
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
-                          const LoadState& attempted) {
+                          const LoadState& attempted, const std::vector<double>& reference_volume) {
   std::string hints;
   const auto add = [&](const std::string& h) { hints += " Hint: " + h; };
   // An inverse step that stops: the imaged mesh may be no deformed state of the discrete
@@ -90,6 +91,21 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
         "= {:.4g} mmHg. If mmHg or kPa was meant, write it (`{} mmHg`); raising `max_iterations` or cutting the "
         "increments finer will not carry such a load.",
         load, written.second, written.first, model.units.display_unit(Dimension::pressure), kpa, mmhg, written.second);
+  }
+  // A volume target below the stress-free volume: along the path p = dW/dV (theory manual (7.13))
+  // with W least at the reference, so the pressure turns negative and the membrane is compressed.
+  if (const int l = step.volume_control.load; l >= 0 && l < static_cast<int>(reference_volume.size()) &&
+                                              reference_volume[l] > 0 &&
+                                              step.volume_control.target < reference_volume[l] * (1 - 1e-9)) {
+    const std::string unit = model.units.display_unit(Dimension::volume);
+    const auto vol = [&](double v) { return model.units.from_internal(v, unit, Dimension::volume); };
+    return fmt::format(
+        " Hint: the step's `volume_control.volume`, {:.6g} {}, is below the stress-free volume of load '{}', {:.6g} {} "
+        "(its enclosed volume at the reference state): deflating a membrane below its rest volume needs a negative "
+        "pressure and compresses it, and a compressed membrane wrinkles or buckles, which Tunica does not model "
+        "(user guide §5, compression), so Newton finds no path. To inflate, give a volume above {:.6g} {}.",
+        vol(step.volume_control.target), unit, model.loads[l].name, vol(reference_volume[l]), unit,
+        vol(reference_volume[l]), unit);
   }
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
@@ -244,6 +260,67 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
               "`stiffened` start resists the uneven normal motion an unstressed membrane does not (theory manual "
               "§7.2).");
   return hints;
+}
+
+std::string compression_hint(const System& system, const Eigen::VectorXd& u, const Step& step, int step_index,
+                             const StepTrace& converged) {
+  const Model& m = system.model();
+  const auto kpa = [&](double p) { return m.units.from_internal(p, "kPa", Dimension::pressure); };
+  const auto mmhg = [&](double p) { return m.units.from_internal(p, "mmHg", Dimension::pressure); };
+  const std::string len = m.units.display_unit(Dimension::length);
+  const auto mm = [&](double x) { return m.units.from_internal(x, len, Dimension::length); };
+  std::string parts;
+  for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    const Part& part = m.parts[p];
+    if (part.is_solid() || part.is_shell() || !m.part_active(static_cast<int>(p), step_index)) continue;
+    const std::vector<MembranePoint> points = system.points(u, static_cast<int>(p), step_index);
+    const double f = compressed_fraction(points);
+    if (f < kCompressedShareForHint) continue;
+    const CompressionSize size = compression_size(points);
+    const MembranePoint* worst = nullptr;
+    for (const MembranePoint& q : points)
+      if (!worst || q.sigma_principal(1) < worst->sigma_principal(1)) worst = &q;
+    parts += fmt::format(
+        "{}part '{}' is in compression over {:.3g} % of its area, its smaller principal stress down to {:.4g} kPa "
+        "({}), most at the point ({:.4g}, {:.4g}, {:.4g}) {} of the reference",
+        parts.empty() ? "" : "; ", part.name, 100 * f, kpa(size.compression),
+        size.tension > 0 ? fmt::format("{:.3g} % of the largest tension, {:.4g} kPa",
+                                       -100 * size.compression / size.tension, kpa(size.tension))
+                         : std::string("no point is in tension"),
+        mm(worst->X(0)), mm(worst->X(1)), mm(worst->X(2)), len);
+  }
+  if (parts.empty()) return "";
+  // Under volume control: did the pressure pass a maximum over the step (dp/dV < 0 at its end)?
+  std::string path;
+  if (const int l = step.volume_control.load; l >= 0 && converged.count() >= 3) {
+    const std::string vunit = m.units.display_unit(Dimension::volume);
+    const auto vol = [&](double v) { return m.units.from_internal(v, vunit, Dimension::volume); };
+    const LoadState& end = converged.last(0);
+    const LoadState* peak = &end;  // the highest of the kept states (StepTrace)
+    for (const LoadState& k : converged.kept())
+      if (k.pressure[l] > peak->pressure[l]) peak = &k;
+    if (peak != &end)
+      path = fmt::format(
+          " The pressure of load '{}' has passed a maximum: it fell from {:.4g} kPa = {:.4g} mmHg at {:.6g} {} to "
+          "{:.4g} kPa = {:.4g} mmHg at the last converged volume, {:.6g} {}: beyond a maximum an inflated wall "
+          "tends to bulge locally, one region growing as another shrinks at the same volume (a bifurcation, which "
+          "volume control does not remove).",
+          m.loads[l].name, kpa(peak->pressure[l]), mmhg(peak->pressure[l]), vol(peak->volume[l]), vunit,
+          kpa(end.pressure[l]), mmhg(end.pressure[l]), vol(end.volume[l]), vunit);
+    else
+      path = fmt::format(" The last converged state: {:.6g} {} at {:.4g} kPa = {:.4g} mmHg.", vol(end.volume[l]),
+                         vunit, kpa(end.pressure[l]), mmhg(end.pressure[l]));
+  }
+  return fmt::format(
+      " Hint: at the last converged state {}. A real membrane cannot carry compression, it wrinkles; Tunica does not "
+      "model wrinkling (user guide §5, compression), and its membrane, which carries the compression instead, has "
+      "next to no stiffness against the out-of-plane modes of a compressed region: the tangent is near singular "
+      "there (a bifurcation), and Newton finds no path from that state.{} Smaller increments (`increments`, "
+      "`max_cutbacks`) reach closer to it but not past it: take the results up to the last converged increment, or "
+      "end the step short of it (a smaller target), and look at the ParaView field `compressed` and the history "
+      "quantity `compressed_fraction` for where the wall is compressed (often next to a clamped end, or where the "
+      "wall's curvature changes sign).",
+      parts, path);
 }
 
 std::string eversion_hint(const Model& model, int load) {

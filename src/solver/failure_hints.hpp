@@ -37,10 +37,29 @@ namespace tunica {
 ///  - else, when no increment of the first step converged (from the stress-free reference): a
 ///    little pressure with a stretch, a pressure step before volume control, more increments or
 ///    iterations; or, where the step asks for the plain start, the default stiffened one.
+/// Before all but the unit hint: a step under volume control whose target lies below the load's
+/// stress-free volume `reference_volume[load]` (deflating the membrane below its rest volume
+/// compresses it): the key, the target and that volume.
 /// `converged`: the step's start and its converged increments' states (also those before a
-/// restart); `attempted`: the loads of the failed increment.
+/// restart); `attempted`: the loads of the failed increment; `reference_volume`: per load, its
+/// enclosed volume at the stress-free reference state (empty: not known).
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
-                          const LoadState& attempted);
+                          const LoadState& attempted, const std::vector<double>& reference_volume = {});
+
+/// A membrane part counts as compressed for compression_hint where this share of its reference
+/// area or more is (elements/membrane_compression.hpp).
+constexpr double kCompressedShareForHint = 1e-3;
+
+/// Empty, or a hint for a failure with no other evidence whose last converged state `u` (of step
+/// `step_index`, 0-based) has a membrane part in compression over kCompressedShareForHint of its
+/// area or more: where (the most compressed point), how strong against the largest tension, and
+/// that a compressed membrane, which the model lets carry compression without wrinkling, is near
+/// a bifurcation whose neighbouring states Newton cannot follow (theory manual (7.13)). Under volume
+/// control, also whether the pressure passed a maximum over the step's converged increments
+/// (dp/dV turned negative: a localizing bulge) and the state reached (the last converged volume
+/// and pressure), which more increments do not pass.
+std::string compression_hint(const System& system, const Eigen::VectorXd& u, const Step& step, int step_index,
+                             const StepTrace& converged);
 
 /// The hint of an increment whose every attempt, down to the smallest allowed, converged to a
 /// state that load `load`'s surface reaches only by passing through itself (the enclosed volume

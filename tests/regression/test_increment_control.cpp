@@ -100,3 +100,30 @@ void expect_clean_stop_beyond_the_maximum(int max_cutbacks) {
       << "no row of the failed increment " << last_increment + 1;
 }
 }  // namespace
+
+TEST(IncrementControl, NoCutBackAllowedIsSaidSo) {
+  // Issue #17 C3: with `max_cutbacks: 0` nothing is cut back, and the message says so instead of
+  // "cut back to 0.5 of the step (0 cut-back(s) allowed)".
+  const std::string src = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere.yaml";
+  const fs::path dir = fs::temp_directory_path() / ("tunica-no-cutback-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string deck = (dir / "over.yaml").string();
+  std::ofstream(deck) << replace(replace(read_text(src), "{inflation: 0.0118 MPa}", "{inflation: 0.0135 MPa}"),
+                                 "increments: 20", "increments: 2\n    solver: {max_cutbacks: 0}");
+  const std::string cmd = std::string(TUNICA_BINARY) + " run " + deck + " -q -o " + (dir / "out").string() + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int status = pclose(p);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 3) << out;
+  EXPECT_NE(out.find("no convergence with the step's increment of 0.5 of the step (`max_cutbacks: 0` in `solver` "
+                     "allows no cut-back"),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(out.find("cut back to"), std::string::npos) << out;
+  EXPECT_EQ(out.find("0 cut-back(s) allowed"), std::string::npos) << out;
+  fs::remove_all(dir);
+}

@@ -427,3 +427,27 @@ TEST(FailureHints, ALoadPushingItsSurfaceInwardFromTheStartNamesFlipNotTheStress
   const std::string flipped = failure_hints(m, m.steps.front(), failed("diverging", 1), along({{0, -1}}), trying(2.5));
   EXPECT_NE(flipped.find("remove `flip: true`"), std::string::npos) << flipped;
 }
+
+TEST(FailureHints, AVolumeTargetBelowTheStressFreeVolumeSaysItCompressesTheMembrane) {
+  // Issue #17 C3: deflating below the rest volume needs a suction and compresses the membrane.
+  const Model m = one_load_model();
+  Step controlled = raising(0);
+  controlled.targets.clear();
+  controlled.volume_control.load = 0;
+  controlled.volume_control.target = 1000;
+  const auto start = along({{0, 1315.12}});
+  const std::string h =
+      failure_hints(m, controlled, failed("diverging", 1e9), start, trying(0), std::vector<double>{1315.12});
+  EXPECT_NE(h.find("`volume_control.volume`, 1000 mm³, is below the stress-free volume of load 'blood', 1315.12 mm³"),
+            std::string::npos)
+      << h;
+  EXPECT_NE(h.find("give a volume above 1315.12 mm³"), std::string::npos) << h;
+  // Above the stress-free volume, or the reference volume not known: no such hint.
+  controlled.volume_control.target = 2500;
+  EXPECT_EQ(failure_hints(m, controlled, failed("diverging", 1e9), start, trying(0), std::vector<double>{1315.12})
+                .find("stress-free volume"),
+            std::string::npos);
+  controlled.volume_control.target = 1000;
+  EXPECT_EQ(failure_hints(m, controlled, failed("diverging", 1e9), start, trying(0)).find("stress-free volume"),
+            std::string::npos);
+}

@@ -11,6 +11,8 @@
 #include "../support/deck_files.hpp"
 #include "../support/sphere_octant.hpp"
 #include "assembly/pressure_load_checks.hpp"
+#include "assembly/volume_control_checks.hpp"
+#include "solver/failure_hints.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -144,4 +146,61 @@ TEST(PressureLoadChecks, AHoleInAWallIsAnUnheldChainOfOpenEdges) {
   Model free = plate(true);
   free.boundaries.clear();
   EXPECT_EQ(unheld_open_edges(free, 0).size(), 2u);
+}
+
+TEST(VolumeControlWarnings, ATargetBelowTheStressFreeVolumeIsWarnedAtItsKey) {
+  // Issue #17 C3: the balloon octant (stress-free volume π/6 mm³) asked to deflate to 0.4 mm³.
+  const std::string path = std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-sphere-3d.yaml";
+  const std::string text = read_text(path);
+  const std::string below = replace(text, "volume: 4.45 mm^3}", "volume: 0.4 mm^3}");
+  const std::vector<std::string> w = volume_control_warnings(System(read_deck_text(below, path)));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("key 'steps[0].volume_control.volume'"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("to 0.4 mm³, below its stress-free volume, 0.521"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("compresses it"), std::string::npos) << w[0];
+  EXPECT_TRUE(volume_control_warnings(System(read_deck_text(text, path))).empty());
+}
+
+TEST(CompressionHint, ACompressedMembraneNamesWhereHowStronglyAndTheWrinklingLimitation) {
+  // Issue #17 B3: a failure with no other evidence whose last converged state is compressed. The
+  // 3-D rat aorta's quarter tube shortened by 5 % under 1 kPa is compressed axially everywhere.
+  const std::string path = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-3d.yaml";
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+parts:
+  wall:
+    element: membrane
+    material: rubber
+    thickness: 0.05 mm
+    mesh: {type: tube, radius: 1 mm, length: 2 mm, sector: 90 deg, around: 8, along: 4, shape: triangle}
+boundary:
+  sym_x: {node_set: wall.x0, dofs: [x]}
+  sym_y: {node_set: wall.y0, dofs: [y]}
+  base: {node_set: wall.bottom, dofs: [z]}
+  stretch: {node_set: wall.top, dofs: [z]}
+loads:
+  lumen: {type: pressure, part: wall}
+steps:
+  - {name: load, increments: 4, set: {stretch: -0.1 mm, lumen: 1 kPa}}
+output:
+  vtk: false
+)";
+  const Model m = read_deck_text(deck, path);
+  Analysis a(m);
+  Capture c;
+  a.run(c);
+  StepTrace trace;
+  trace.restart_at(a.loads());
+  const std::string h = compression_hint(a.system(), a.displacement(), m.steps[0], 0, trace);
+  EXPECT_NE(h.find("part 'wall' is in compression over "), std::string::npos) << h;
+  EXPECT_NE(h.find("% of the largest tension"), std::string::npos) << h;
+  EXPECT_NE(h.find("most at the point ("), std::string::npos) << h;
+  EXPECT_NE(h.find("Tunica does not model wrinkling (user guide §5, compression)"), std::string::npos) << h;
+  // In tension (stretched instead): no hint.
+  const Model t = read_deck_text(replace(deck, "stretch: -0.1 mm", "stretch: 0.4 mm"), path);
+  Analysis b(t);
+  Capture d;
+  b.run(d);
+  EXPECT_EQ(compression_hint(b.system(), b.displacement(), t.steps[0], 0, trace), "");
 }
