@@ -151,16 +151,26 @@ const ComponentSpec& step_spec() {
                                 "its `increments`, with cut-backs) and moves X_{k+1} = X_k − ω (x(X_k) − x̂), until "
                                 "every node lands within `fixed_point_tolerance` of x̂; it costs a forward solve per "
                                 "iteration and its rate is linear, faster for a stiffer membrane. Each iteration "
-                                "is a row of fixed_point.csv"),
-                           {"direct", "fixed_point"}),
+                                "is a row of fixed_point.csv. `prestress` (§13.2): no zero-pressure geometry; the "
+                                "imaged geometry stays the reference and each Gauss point carries the prestretch that "
+                                "balances the loads (the updated-prestrain method): forward solves from the imaged "
+                                "geometry ramp the loads in the step's `increments`, each followed by an update of the "
+                                "prestretch, and then hold them until a solve moves no node farther than "
+                                "`fixed_point_tolerance`; each solve is a row of fixed_point.csv. The steps after it "
+                                "start from the imaged geometry with that prestress (displacements from it); its "
+                                "prescribed values must be 0"),
+                           {"direct", "fixed_point", "prestress"}),
                     "direct"),
        with_default(positive(number("fixed_point_tolerance", Dimension::dimensionless,
                                     "`method: fixed_point`: stop when the largest nodal distance |x(X_k) − x̂| is at "
-                                    "most this times the diagonal of the imaged geometry's bounding box")),
+                                    "most this times the diagonal of the imaged geometry's bounding box; `method: "
+                                    "prestress`: stop when a solve at the imaged loads moves no node farther")),
                     "1e-8"),
        with_default(at_most(at_least(integer("fixed_point_iterations",
                                              "`method: fixed_point`: the most iterations (forward solves); a run "
-                                             "that has not reached `fixed_point_tolerance` after them stops (exit 3)"),
+                                             "that has not reached `fixed_point_tolerance` after them stops (exit 3). "
+                                             "`method: prestress`: the most solves at the imaged loads after the "
+                                             "ramp"),
                                      1),
                             1e6),
                     "50"),
@@ -595,6 +605,7 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     s.name = p.text("name");
     s.inverse = p.text("type") == "inverse";
     if (p.text("method") == "fixed_point") s.inverse_method = Step::InverseMethod::fixed_point;
+    if (p.text("method") == "prestress") s.inverse_method = Step::InverseMethod::prestress;
     s.fixed_point.tolerance = p.number("fixed_point_tolerance");
     s.fixed_point.max_iterations = static_cast<int>(p.integer("fixed_point_iterations"));
     s.fixed_point.relaxation = p.number("relaxation");
@@ -604,10 +615,18 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
       if (!s.inverse)
         node[key].fail(fmt::format("`{}` is a key of inverse steps (`type: inverse`), and step '{}' is a forward step",
                                    key, s.name));
-      if (std::string(key) != "method" && s.inverse_method != Step::InverseMethod::fixed_point)
-        node[key].fail(fmt::format("`{}` is a key of the fixed-point method: add `method: fixed_point` to step '{}' "
-                                   "(the default `method: direct` takes none)",
-                                   key, s.name));
+      const bool iterative_key = std::string(key) == "fixed_point_tolerance" ||
+                                 std::string(key) == "fixed_point_iterations" || std::string(key) == "acceleration";
+      const bool fits = std::string(key) == "method" || s.inverse_method == Step::InverseMethod::fixed_point ||
+                        (iterative_key && s.inverse_method == Step::InverseMethod::prestress);
+      if (!fits)
+        node[key].fail(fmt::format("`{}` is a key of the fixed-point method{}: add `method: fixed_point` to step '{}' "
+                                   "({})",
+                                   key, iterative_key ? " and the prestress method" : "", s.name,
+                                   s.inverse_method == Step::InverseMethod::prestress
+                                       ? "`method: prestress` takes `fixed_point_tolerance`, `fixed_point_iterations` "
+                                         "and `acceleration` only"
+                                       : "the default `method: direct` takes none"));
     }
     s.increments = static_cast<int>(p.integer("increments"));
     s.solver = read_solver(node["solver"], m.units, solver);

@@ -207,7 +207,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   note_penetration(analysis, info);
   // The end of an inverse step: its zero-pressure geometry (reference_mesh.hpp), written before the
   // steps after it continue on it as their reference (Analysis): the deck's positions and its unknowns.
-  if (info.step > 0 && info.fraction >= 1.0 - 1e-12 && model_.steps[info.step - 1].inverse)
+  if (info.step > 0 && info.fraction >= 1.0 - 1e-12 && model_.steps[info.step - 1].moves_reference())
     write_file_atomically(dir_ + "/" + reference_mesh_name(model_, info.step - 1),
                           reference_mesh_text(model_, analysis.displacement()));
   last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}, model_.fingerprint};

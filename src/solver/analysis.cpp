@@ -2,6 +2,7 @@
 
 #include "assembly/pressure_load_checks.hpp"
 #include "solver/failure_hints.hpp"
+#include "solver/forward_solve_counter.hpp"
 
 #include <fmt/format.h>
 
@@ -41,7 +42,7 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int
   // (13.14). The Gauss-point states of the inverse problem give it, in System::points order.
   int inverse_step = -1;
   for (int s = 0; s < static_cast<int>(deck_model_.steps.size()); ++s)
-    if (deck_model_.steps[s].inverse) inverse_step = s;
+    if (deck_model_.steps[s].moves_reference()) inverse_step = s;
   std::unique_ptr<System> deck_system;
   for (int p = 0; p < static_cast<int>(m->parts.size()); ++p) {
     if (!m->parts[p].imaged_thickness || inverse_step < 0) continue;
@@ -60,9 +61,13 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int
     for (const Boundary& b : m->boundaries)
       if (auto it = step.targets.find(b.name); it != step.targets.end()) it->second = -it->second;
   }
+  install_model(std::move(m));
+}
+
+void Analysis::install_model(std::unique_ptr<Model> m) {
   system_.reset();
   own_model_ = std::move(m);
-  model_ = own_model_.get();
+  model_ = own_model_ ? own_model_.get() : &deck_model_;
   system_ = std::make_unique<System>(*model_);
   orientation_volume_.clear();
   reference_volume_.clear();
@@ -88,33 +93,6 @@ void Analysis::leave_inverse_step() {
   update_reactions();
 }
 
-namespace {
-
-/// Counts what the forward solve of a fixed-point iteration does and passes its Newton iterations,
-/// cut-backs and retries on; its converged increments are not states of the run.
-class ForwardSolveCounter final : public AnalysisObserver {
-public:
-  explicit ForwardSolveCounter(AnalysisObserver& outer) : outer_(outer) {}
-  int increments = 0, newton_iterations = 0, cutbacks = 0;
-  void on_iteration(const IncrementInfo& i, const IterationRecord& r) override { outer_.on_iteration(i, r); }
-  void on_cutback(const IncrementInfo& i, const std::string& why) override {
-    ++cutbacks;
-    outer_.on_cutback(i, why);
-  }
-  void on_retry(const IncrementInfo& i, const std::string& why, const std::string& how) override {
-    outer_.on_retry(i, why, how);
-  }
-  void on_increment(const Analysis&, const IncrementInfo& i) override {
-    ++increments;
-    newton_iterations += i.iterations;
-  }
-  bool stop_requested() override { return outer_.stop_requested(); }
-
-private:
-  AnalysisObserver& outer_;
-};
-
-}  // namespace
 
 void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   // Resumed from the checkpoint at the step's end: X is in state_.u already.
@@ -140,18 +118,7 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   }
   const double goal = fp.tolerance * (hi - lo).norm();
   const int dim = deck.dofs_per_node(), nodes = deck.num_nodes();
-  const auto back_to_deck = [&] {
-    system_.reset();
-    own_model_.reset();
-    model_ = &deck_model_;
-    system_ = std::make_unique<System>(*model_);
-    orientation_volume_.clear();
-    reference_volume_.clear();
-    for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l) {
-      orientation_volume_.push_back(volume_sign_is_orientation(*model_, l));
-      reference_volume_.push_back(system_->volume(Eigen::VectorXd::Zero(model_->num_dofs()), l));
-    }
-  };
+  const auto back_to_deck = [&] { install_model(nullptr); };
   // X_0 = x̂ (shift 0); X_k = x̂ + shift.
   Eigen::VectorXd shift = Eigen::VectorXd::Zero(deck.num_dofs()), previous;
   double omega = fp.relaxation, max_distance = 0;
@@ -305,8 +272,9 @@ void Analysis::update_reactions() {
 void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
   if (resume) {
     state_ = *resume;
-    // Past an inverse step: the reference it computed (the restart file records it).
+    // Past an inverse step: the reference it computed, or the prestress (the restart file records them).
     if (state_.reference_shift.size() > 0) adopt_reference(state_.reference_shift);
+    if (!state_.prestress.empty()) adopt_prestress(state_.prestress);
     // Which parts are active follows from the step (restart files do not store it).
     state_.loads.step = state_.step_start.step = state_.step;
     update_reactions();
@@ -318,10 +286,13 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     const Step& step = model_->steps[state_.step];
     if (step.inverse && step.inverse_method == Step::InverseMethod::fixed_point)
       run_fixed_point_step(observer);
+    else if (step.inverse && step.inverse_method == Step::InverseMethod::prestress)
+      run_prestress_step(observer);
     else
       run_step(observer);
-    // An inverse step that is the last step keeps its own state (u = X − x̂ on the deck's positions).
-    if (model_->steps[state_.step].inverse && state_.step + 1 < static_cast<int>(model_->steps.size()))
+    // An inverse step that is the last step keeps its own state (u = X − x̂ on the deck's positions);
+    // a prestress step's state is already one of the steps after it (on the prestressed copy).
+    if (deck_model_.steps[state_.step].moves_reference() && state_.step + 1 < static_cast<int>(model_->steps.size()))
       leave_inverse_step();
     state_.step_start = state_.loads;
     state_.fraction = 0;
