@@ -29,6 +29,7 @@
 #include "io/unitless_values.hpp"
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
+#include "model/axis_pole_check.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/wall_thickness_check.hpp"
 #include "model/symmetry_plane_check.hpp"
@@ -164,7 +165,8 @@ const ComponentSpec& step_spec() {
        with_default(positive(number("fixed_point_tolerance", Dimension::dimensionless,
                                     "`method: fixed_point`: stop when the largest nodal distance |x(X_k) − x̂| is at "
                                     "most this times the diagonal of the imaged geometry's bounding box; `method: "
-                                    "prestress`: stop when a solve at the imaged loads moves no node farther")),
+                                    "prestress`: stop when a solve at the imaged loads moves no node farther (its "
+                                    "default: 1e-4)")),
                     "1e-8"),
        with_default(at_most(at_least(integer("fixed_point_iterations",
                                              "`method: fixed_point`: the most iterations (forward solves); a run "
@@ -181,7 +183,8 @@ const ComponentSpec& step_spec() {
                     "1"),
        with_default(one_of(text("acceleration",
                                 "`method: fixed_point`: `none` (ω fixed) or `aitken` (ω from Aitken's Δ² each "
-                                "iteration, (13.17))"),
+                                "iteration, (13.17)); `method: prestress`: the same on the update of the prestretch "
+                                "(13.24) (its default: `aitken`)"),
                            {"none", "aitken"}),
                     "none"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
@@ -610,6 +613,13 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     s.fixed_point.max_iterations = static_cast<int>(p.integer("fixed_point_iterations"));
     s.fixed_point.relaxation = p.number("relaxation");
     s.fixed_point.aitken = p.text("acceleration") == "aitken";
+    // The prestress method's own defaults (theory manual §13.2): its solves approach the imaged
+    // geometry slowly along modes of little material stiffness, which Aitken's factor speeds up, and a
+    // distance of 1e-4 of the model's size is far below what an image resolves.
+    if (s.inverse_method == Step::InverseMethod::prestress) {
+      if (!node.has("fixed_point_tolerance")) s.fixed_point.tolerance = 1e-4;
+      if (!node.has("acceleration")) s.fixed_point.aitken = true;
+    }
     for (const char* key : {"method", "fixed_point_tolerance", "fixed_point_iterations", "relaxation", "acceleration"}) {
       if (!node.has(key)) continue;
       if (!s.inverse)
@@ -973,6 +983,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     if (t.impossible) thickness.fail(t.message);
     m.warnings.push_back(format_location(thickness.where(), t.message));
   }
+  // An axisymmetric membrane's pole whose r is free: at the part.
+  for (const PoleMisfit& w : free_pole_warnings(m))
+    m.warnings.push_back(format_location(deck["parts"][m.parts[w.part].name].where(), w.message));
   // A symmetry boundary that holds another DOF than the plane its nodes lie on: at the boundary.
   for (const SymmetryMisfit& s : symmetry_name_warnings(m))
     m.warnings.push_back(format_location(m.boundaries[s.boundary].where, s.message));

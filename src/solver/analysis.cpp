@@ -122,6 +122,7 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   // X_0 = x̂ (shift 0); X_k = x̂ + shift.
   Eigen::VectorXd shift = Eigen::VectorXd::Zero(deck.num_dofs()), previous;
   double omega = fp.relaxation, max_distance = 0;
+  std::vector<double> distances;  // max_n |r_n| of each iteration
   for (int k = 1;; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
@@ -150,15 +151,31 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
       // step's start again, on the deck's model.
       back_to_deck();
       state_ = start;
-      throw SolveError(
-          std::string(e.what()) +
-          (k == 1 ? " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
-                    "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
-                    "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes no "
-                    "such detour"
-                  : fmt::format(" The forward solve of fixed-point iteration {} starts from the reference the update "
-                                "(13.16) gave; a `relaxation` below 1 (now {:g}) keeps the updates shorter",
-                                k, fp.relaxation)));
+      if (k == 1)
+        throw SolveError(std::string(e.what()) +
+                         " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
+                         "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
+                         "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes "
+                         "no such detour");
+      // Past the first iteration the forward solve starts from a reference the update (13.16) gave: the
+      // hints of a solve from a deck's own reference do not apply, the course of the distance does.
+      std::string what = e.what();
+      if (const auto h = what.find(" Hint:"); h != std::string::npos) what.erase(h);
+      const auto smallest = std::min_element(distances.begin(), distances.end());
+      const std::string unit = deck.units.display_unit(Dimension::length);
+      const auto len = [&](double v) { return deck.units.from_internal(v, unit, Dimension::length); };
+      const bool growing = distances.size() >= 2 && distances.back() > distances[distances.size() - 2] &&
+                           distances.back() > 2 * *smallest;
+      throw SolveError(fmt::format(
+          "{} The forward solve of fixed-point iteration {} starts from the reference the update (13.16) gave. The "
+          "largest distance from the imaged positions was {:.4g} {} after iteration 1, {:.4g} {} at its smallest "
+          "(iteration {}) and {:.4g} {} after iteration {}{}. Hint: a `relaxation` below 1 (now {:g}){} keeps the "
+          "updates shorter; an imaged mesh that is no equilibrium shape of the discrete membrane (a surface laid on "
+          "an ideal or segmented shape) has no exact fixed point, and `method: prestress` (theory manual §13.2), "
+          "which keeps the imaged geometry as the reference, reaches such meshes",
+          what, k, len(distances.front()), unit, len(*smallest), unit, smallest - distances.begin() + 1,
+          len(distances.back()), unit, k - 1, growing ? ": the iteration was diverging" : "", fp.relaxation,
+          fp.aitken ? " or no `acceleration`" : " or `acceleration: aitken`"));
     } catch (...) {
       back_to_deck();
       state_ = start;
@@ -175,6 +192,7 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
       max_distance = std::max(max_distance, std::sqrt(d2));
     }
     const bool converged = max_distance <= goal;
+    distances.push_back(max_distance);
     // Aitken's Δ² on the relaxation (13.17), from the second iteration on.
     if (!converged && fp.aitken && previous.size() > 0) {
       const Eigen::VectorXd dr = r - previous;
@@ -210,7 +228,7 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
           "per iteration. If it is still falling, raise `fixed_point_iterations` or try `acceleration: aitken` (or a "
           "`relaxation` below 1 if it oscillates); if it stagnates, the imaged shape may not be an equilibrium shape "
           "of the discrete membrane (theory manual §13), and a larger `fixed_point_tolerance` accepts the "
-          "nearest reference found",
+          "nearest reference found, or `method: prestress` (§13.2) reaches the imaged geometry itself",
           s + 1, step.name, k, len(max_distance), unit, len(rec.rms_distance), unit, len(goal), unit, fp.tolerance,
           len((hi - lo).norm()), unit));
     }
@@ -347,8 +365,21 @@ void Analysis::run_step(AnalysisObserver& observer) {
     // under volume control, (7.10);
     // an attempt it fails is retried once at the same size with the plain tangent before any
     // cut-back, so that the default is never worse than `stress_free_start: exact`.
+    // The first increment of a step that raises a pressure from zero, after steps without one (a
+    // prestretch alone), starts as from rest too: the wall may carry no tension across the coming
+    // load (a tube stretched axially alone has no hoop tension) and ovalizes freely (user guide §3.1).
+    bool pressure_from_zero = t == 0 && vc.load < 0;
+    if (pressure_from_zero) {
+      bool raised = false;
+      for (std::size_t k = 0; k < start.pressure.size(); ++k) {
+        if (start.pressure[k] != 0) pressure_from_zero = false;
+        if (end.pressure[k] != 0) raised = true;
+      }
+      pressure_from_zero = pressure_from_zero && raised;
+    }
     SolverSettings settings = step.solver;
-    const bool stiffened_start = settings.stiffen_stress_free_start && (state_.u.array() == 0.0).all();
+    const bool stiffened_start =
+        settings.stiffen_stress_free_start && ((state_.u.array() == 0.0).all() || pressure_from_zero);
     IncrementInfo info;
     info.step = s + 1;
     info.step_name = step.name;
@@ -368,7 +399,8 @@ void Analysis::run_step(AnalysisObserver& observer) {
       system_->apply_boundary(trial, u);
       NewtonResult r = solve_increment(*system_, *solver, trial, u, settings,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
-                                    vc.load >= 0 ? &constraint : nullptr, &state_.u);
+                                    vc.load >= 0 ? &constraint : nullptr, &state_.u,
+                                    stiffened_start && settings.stiffen_stress_free_start);
       // A converged state whose enclosed volume changed sign is rejected like any inadmissible
       // state: the increment is cut back.
       int everted_load = -1;
