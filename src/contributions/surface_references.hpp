@@ -61,10 +61,8 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
       if (!part.point_prestretch.empty()) {
         MembraneReference<N>& ref = out.back();
         for (int q = 0; q < MembraneReference<N>::Q; ++q) {
-          const Eigen::Matrix2d& P =
-              part.point_prestretch.at(first_point + static_cast<std::size_t>(e) * MembraneReference<N>::Q + q);
-          ref.dNds[q] = ref.dNds[q] * P;
-          ref.weight[q] /= P.determinant();
+          prestretch_reference<N>(
+              ref, q, part.point_prestretch.at(first_point + static_cast<std::size_t>(e) * MembraneReference<N>::Q + q));
         }
       }
     } catch (const BadElement& err) {

@@ -30,6 +30,7 @@
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
 #include "model/axis_pole_check.hpp"
+#include "model/coincident_nodes_check.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/wall_thickness_check.hpp"
 #include "model/symmetry_plane_check.hpp"
@@ -167,12 +168,12 @@ const ComponentSpec& step_spec() {
                                     "most this times the diagonal of the imaged geometry's bounding box; `method: "
                                     "prestress`: stop when a solve at the imaged loads moves no node farther (its "
                                     "default: 1e-4)")),
-                    "1e-8"),
+                    "1e-6"),
        with_default(at_most(at_least(integer("fixed_point_iterations",
                                              "`method: fixed_point`: the most iterations (forward solves); a run "
                                              "that has not reached `fixed_point_tolerance` after them stops (exit 3). "
                                              "`method: prestress`: the most solves at the imaged loads after the "
-                                             "ramp"),
+                                             "ramp (its default: 200)"),
                                      1),
                             1e6),
                     "50"),
@@ -184,9 +185,9 @@ const ComponentSpec& step_spec() {
        with_default(one_of(text("acceleration",
                                 "`method: fixed_point`: `none` (ω fixed) or `aitken` (ω from Aitken's Δ² each "
                                 "iteration, (13.17)); `method: prestress`: the same on the update of the prestretch "
-                                "(13.24) (its default: `aitken`)"),
+                                "(13.24)"),
                            {"none", "aitken"}),
-                    "none"),
+                    "aitken"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
        structured("set", "map", "boundary or load names → their values at the end of the step"),
        structured("volume_control", "map",
@@ -614,11 +615,11 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     s.fixed_point.relaxation = p.number("relaxation");
     s.fixed_point.aitken = p.text("acceleration") == "aitken";
     // The prestress method's own defaults (theory manual §13.2): its solves approach the imaged
-    // geometry slowly along modes of little material stiffness, which Aitken's factor speeds up, and a
-    // distance of 1e-4 of the model's size is far below what an image resolves.
+    // geometry slowly along modes of little material stiffness, a distance of 1e-4 of the model's
+    // size is far below what an image resolves, and each solve is one increment.
     if (s.inverse_method == Step::InverseMethod::prestress) {
       if (!node.has("fixed_point_tolerance")) s.fixed_point.tolerance = 1e-4;
-      if (!node.has("acceleration")) s.fixed_point.aitken = true;
+      if (!node.has("fixed_point_iterations")) s.fixed_point.max_iterations = 200;
     }
     for (const char* key : {"method", "fixed_point_tolerance", "fixed_point_iterations", "relaxation", "acceleration"}) {
       if (!node.has(key)) continue;
@@ -983,6 +984,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     if (t.impossible) thickness.fail(t.message);
     m.warnings.push_back(format_location(thickness.where(), t.message));
   }
+  // Two parts that touch at nodes they do not share: at the second part.
+  for (const CoincidentNodes& w : coincident_node_warnings(m))
+    m.warnings.push_back(format_location(deck["parts"][m.parts[w.part_b].name].where(), w.message));
   // An axisymmetric membrane's pole whose r is free: at the part.
   for (const PoleMisfit& w : free_pole_warnings(m))
     m.warnings.push_back(format_location(deck["parts"][m.parts[w.part].name].where(), w.message));

@@ -59,8 +59,11 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
       const bool boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == name; });
       if (boundary && value != 0)
         node["set"][name].fail(fmt::format("`method: prestress` keeps the imaged geometry as the reference, and "
-                                           "boundary '{}' would move its nodes off it: prescribe 0 in the prestress "
-                                           "step and move them in a later step (or use `method: direct`)",
+                                           "boundary '{}' would move its nodes off it, which no prestress "
+                                           "balances (theory manual §13.2). A value that places the zero-pressure "
+                                           "reference (an axial prestretch held by the ends) needs `method: direct` "
+                                           "or `fixed_point`, which find that reference; with ends held where they "
+                                           "are imaged, prescribe 0",
                                            name));
     }
     // The fixed point's linear systems are the forward problem's (13.15), symmetric where it is.

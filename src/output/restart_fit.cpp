@@ -124,8 +124,9 @@ std::string check_restart_fits(const Model& m, const RestartRecord& r, const std
                     folder, m.steps.front().name, c.reference_shift.size(), m.num_dofs(), m.deck_file));
   // Past a prestress step (theory manual §13.2) the state is one of the prestressed imaged geometry,
   // whose prestretch per Gauss point the restart file records as `prestress`.
+  // (A run of the prestress step alone ends in it, at step fraction 1, with its prestress.)
   const bool past_prestress = !m.steps.empty() && m.steps.front().inverse && !m.steps.front().moves_reference() &&
-                              c.step > 0;
+                              (c.step > 0 || c.fraction >= 1.0 - 1e-12);
   if (past_prestress && c.prestress.empty())
     throw InputError({file, 0, 0, ""},
                      fmt::format("the run in {} is past the prestress step '{}', and its restart file records no "

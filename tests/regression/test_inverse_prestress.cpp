@@ -7,7 +7,7 @@
 //    axial stretch of 1, compared with the direct method); the iterations and their distances are
 //    printed.
 //  - Its keys, its refusal of a prescribed value, and a completed prestress run resumed with a
-//    forward step added.
+//    forward step added (in-process and with `tunica run --restart`).
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -16,8 +16,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 
 #include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/scratch.hpp"
 #include "core/errors.hpp"
 
 using namespace tunica;
@@ -285,4 +288,20 @@ TEST(PrestressInverse, ACompletedPrestressRunContinuesWithAForwardStepAdded) {
   whole.run(c3);
   EXPECT_FALSE(c3.records.empty());
   EXPECT_EQ(resumed.displacement(), whole.displacement());
+}
+
+TEST(PrestressInverse, AFinishedPrestressOnlyRunRestartsWithAForwardStepAddedOnTheCommandLine) {
+  // `tunica run` of the prestress step alone, then `--restart` with the deck that adds the forward
+  // steps: accepted, and the same history as the whole deck run at once.
+  const std::string dir = scratch("prestress-restart", "cli").string();
+  const std::string base = replace(replace(read_text(kRatInverse), "stretch: -0.6 mm", "stretch: 0 mm"),
+                                   "    type: inverse ", "    method: prestress\n    type: inverse ");
+  const std::string only = base.substr(0, base.find("  - name: systolic")) + base.substr(base.find("\noutput:") + 1);
+  std::ofstream(dir + "/only.yaml") << only;
+  std::ofstream(dir + "/whole.yaml") << base;
+  ASSERT_EQ(run_cli("run " + dir + "/only.yaml -o " + dir + "/resumed -q -j 1").exit_code, 0);
+  const Outcome resumed = run_cli("run " + dir + "/whole.yaml --restart " + dir + "/resumed -q -j 1");
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+  ASSERT_EQ(run_cli("run " + dir + "/whole.yaml -o " + dir + "/whole -q -j 1").exit_code, 0);
+  EXPECT_EQ(read_text(dir + "/resumed/history.csv"), read_text(dir + "/whole/history.csv"));
 }
