@@ -59,6 +59,10 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
     return;
   }
   const int removed = remove_earlier_run(dir_);
+  if (const std::string other = foreign_file(dir_); !other.empty())
+    throw std::runtime_error("'" + other + "' is not a file Tunica wrote (it does not start as Tunica's file of that "
+                             "name does), and this run would write over it: move it away, or write the run into "
+                             "another folder (-o)");
   if (removed > 0 && progress_)
     std::fprintf(progress_, "removed the %d file(s) of an earlier Tunica run in %s\n", removed, dir_.c_str());
   history_.create(dir_, "history.csv", history_header_);

@@ -111,12 +111,8 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   for (std::size_t k = 0; k < deck.loads.size(); ++k)
     if (auto it = step.targets.find(deck.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
   // The model's size: the diagonal of the imaged bounding box.
-  Eigen::Vector3d lo = deck.X.front(), hi = deck.X.front();
-  for (const auto& x : deck.X) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double goal = fp.tolerance * (hi - lo).norm();
+  const double diagonal = imaged_diagonal();
+  const double goal = fp.tolerance * diagonal;
   const int dim = deck.dofs_per_node(), nodes = deck.num_nodes();
   const auto back_to_deck = [&] { install_model(nullptr); };
   // X_0 = x̂ (shift 0); X_k = x̂ + shift.
@@ -169,13 +165,15 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
       throw SolveError(fmt::format(
           "{} The forward solve of fixed-point iteration {} starts from the reference the update (13.16) gave. The "
           "largest distance from the imaged positions was {:.4g} {} after iteration 1, {:.4g} {} at its smallest "
-          "(iteration {}) and {:.4g} {} after iteration {}{}. Hint: a `relaxation` below 1 (now {:g}){} keeps the "
-          "updates shorter; an imaged mesh that is no equilibrium shape of the discrete membrane (a surface laid on "
+          "(iteration {}) and {:.4g} {} after iteration {}{}. Hint: {} keeps the updates shorter; an imaged mesh that is no equilibrium shape of the discrete membrane (a surface laid on "
           "an ideal or segmented shape) has no exact fixed point, and `method: prestress` (theory manual §13.2), "
-          "which keeps the imaged geometry as the reference, reaches such meshes",
+          "which keeps the imaged geometry as the reference, converges on such meshes (its mean stress is right, its "
+          "peak can be off: user guide §3.5)",
           what, k, len(distances.front()), unit, len(*smallest), unit, smallest - distances.begin() + 1,
-          len(distances.back()), unit, k - 1, growing ? ": the iteration was diverging" : "", fp.relaxation,
-          fp.aitken ? " or no `acceleration`" : " or `acceleration: aitken`"));
+          len(distances.back()), unit, k - 1, growing ? ": the iteration was diverging" : "",
+          fp.aitken ? fmt::format("`acceleration: none` with a `relaxation` below 1 (Aitken's last factor was {:.3g})",
+                                  omega)
+                    : fmt::format("a `relaxation` below 1 (now {:g}) or `acceleration: aitken`", fp.relaxation)));
     } catch (...) {
       back_to_deck();
       state_ = start;
@@ -225,12 +223,14 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
           "solution from the last reference is still {:.4g} {} from the imaged positions at its farthest node "
           "({:.4g} {} root mean square), above the tolerance {:.4g} {} (fixed_point_tolerance {:g} × the imaged "
           "bounding-box diagonal {:.6g} {}). The files of the run so far are kept; fixed_point.csv lists the distance "
-          "per iteration. If it is still falling, raise `fixed_point_iterations` or try `acceleration: aitken` (or a "
-          "`relaxation` below 1 if it oscillates); if it stagnates, the imaged shape may not be an equilibrium shape "
+          "per iteration. If it is still falling, raise `fixed_point_iterations`{}; if it stagnates, the imaged shape may not be an equilibrium shape "
           "of the discrete membrane (theory manual §13), and a larger `fixed_point_tolerance` accepts the "
-          "nearest reference found, or `method: prestress` (§13.2) reaches the imaged geometry itself",
+          "nearest reference found, or `method: prestress` (§13.2) reaches the imaged geometry itself (user guide "
+          "§3.5 on its peak stresses)",
           s + 1, step.name, k, len(max_distance), unit, len(rec.rms_distance), unit, len(goal), unit, fp.tolerance,
-          len((hi - lo).norm()), unit));
+          len(diagonal), unit,
+          fp.aitken ? " (Aitken's acceleration is on; if it oscillates, `acceleration: none` with a `relaxation` below 1)"
+                    : " or try `acceleration: aitken` (or a `relaxation` below 1 if it oscillates)"));
     }
     previous = r;
     // X_{k+1} = X_k − ω_k r_k (13.16); a prescribed DOF keeps X = x̂ + v exactly.
@@ -241,20 +241,34 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   back_to_deck();
   state_ = start;
   state_.u = shift;
+  end_iterative_step(observer, end, 0);
+}
+
+void Analysis::end_iterative_step(AnalysisObserver& observer, const LoadState& end, int iterations) {
   state_.loads = end;
   update_volumes();
-  state_.trace.restart_at(start.step_start);
+  state_.trace.restart_at(state_.step_start);
   state_.trace.push(state_.loads);
   state_.fraction = 1;
   state_.increment = 1;
   update_reactions();
   IncrementInfo info;
-  info.step = s + 1;
-  info.step_name = step.name;
+  info.step = state_.step + 1;
+  info.step_name = deck_model_.steps[state_.step].name;
   info.increment = 1;
   info.fraction = 1;
-  info.time = static_cast<double>(s) + 1;
+  info.time = static_cast<double>(state_.step) + 1;
+  info.iterations = iterations;
   observer.on_increment(*this, info);
+}
+
+double Analysis::imaged_diagonal() const {
+  Eigen::Vector3d lo = deck_model_.X.front(), hi = deck_model_.X.front();
+  for (const auto& x : deck_model_.X) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return (hi - lo).norm();
 }
 
 std::string Analysis::eversion(const Eigen::VectorXd& u, int& load) const {

@@ -158,6 +158,11 @@ private:
   /// the current loads to `to`, named after prestress iteration `iteration`.
   void adopt_prestress(const std::vector<double>& prestress, int forward_of = -1, int iteration = 0,
                        const LoadState* to = nullptr);
+  /// The end of an iterative inverse step (fixed point, prestress) at state_.u: the loads `end`, the
+  /// step done in one increment of `iterations` Newton iterations, reported to `observer`.
+  void end_iterative_step(AnalysisObserver& observer, const LoadState& end, int iterations);
+  /// The diagonal of the bounding box of the deck's (imaged) positions: the model's size.
+  double imaged_diagonal() const;
   /// Makes `m` the model (model() and a system() built on it) with the volumes that go with it.
   void install_model(std::unique_ptr<Model> m);
   /// The end of inverse step `s`: the reference becomes the computed X (adopt_reference), the

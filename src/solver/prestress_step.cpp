@@ -105,12 +105,8 @@ void Analysis::run_prestress_step(AnalysisObserver& observer) {
       l.pressure[k] += t * (end.pressure[k] - start.step_start.pressure[k]);
     return l;
   };
-  Eigen::Vector3d lo = deck.X.front(), hi = deck.X.front();
-  for (const auto& x : deck.X) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double goal = fp.tolerance * (hi - lo).norm();
+  const double diagonal = imaged_diagonal();
+  const double goal = fp.tolerance * diagonal;
   const int dim = deck.dofs_per_node(), nodes = deck.num_nodes();
   const auto back_to_deck = [&] { install_model(nullptr); };
   std::vector<double> prestress = initial_prestress(deck);
@@ -194,7 +190,7 @@ void Analysis::run_prestress_step(AnalysisObserver& observer) {
           "`fixed_point_iterations`; if it stagnates, the imaged shape may not be an equilibrium shape of the "
           "discrete membrane (theory manual §13.2), and a larger `fixed_point_tolerance` accepts the nearest state",
           s + 1, step.name, step.increments, k - step.increments, len(max_distance), unit, len(rec.rms_distance), unit,
-          len(goal), unit, fp.tolerance, len((hi - lo).norm()), unit));
+          len(goal), unit, fp.tolerance, len(diagonal), unit));
     }
     // (13.21): P ← U^ω P with U = (P⁻ᵀ C P⁻¹)^½ the stretch of the solve from the imaged geometry, C the
     // Gauss point's C from the stress-free state; H̃ ← h det P for an imaged thickness h = H̃ / det P (13.22).
@@ -227,21 +223,7 @@ void Analysis::run_prestress_step(AnalysisObserver& observer) {
   // solve's state (within the tolerance of the imaged positions).
   state_.prestress = prestress;
   state_.step_start = start.step_start;
-  state_.loads = end;
-  update_volumes();
-  state_.trace.restart_at(start.step_start);
-  state_.trace.push(state_.loads);
-  state_.fraction = 1;
-  state_.increment = 1;
-  update_reactions();
-  IncrementInfo info;
-  info.step = s + 1;
-  info.step_name = step.name;
-  info.increment = 1;
-  info.fraction = 1;
-  info.time = static_cast<double>(s) + 1;
-  info.iterations = iterations;
-  observer.on_increment(*this, info);
+  end_iterative_step(observer, end, iterations);
 }
 
 }  // namespace tunica
