@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -157,6 +158,9 @@ int mesh(const std::string& geo, const std::string& msh, const tunica::GeoMeshFo
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Progress and messages written to a pipe whose reader has gone (`tunica run … | head`) are dropped
+  // (the write fails with EPIPE) rather than ending the run by SIGPIPE: the run and its files finish.
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{"Tunica: large-strain analysis of thin incompressible hyperelastic membranes"};
   app.set_version_flag("--version", std::string(TUNICA_VERSION));
   app.require_subcommand(1);

@@ -106,7 +106,8 @@ public:
   /// gives the inverse problem's R and K (BlockContribution::assemble_inverse; K is not symmetric),
   /// u moving the reference nodes X = x̂ + u, the deck's positions x̂ the imaged ones.
   bool inverse(const LoadState& loads) const {
-    return loads.step >= 0 && loads.step < static_cast<int>(model_.steps.size()) && model_.steps[loads.step].inverse;
+    return loads.step >= 0 && loads.step < static_cast<int>(model_.steps.size()) &&
+           model_.steps[loads.step].moves_reference();
   }
   /// A zero matrix with the tangent's pattern (both triangles).
   const SparseMatrix& pattern() const { return layout_->pattern(); }

@@ -34,8 +34,16 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
     const std::size_t i = 2 * static_cast<std::size_t>(first_element + e);
     return {part.point_thickness.at(i), part.point_thickness.at(i + 1)};
   }
+  /// The prestretch (P_θ, P_s) at the Gauss points of element e: the one a prestress step left (13.23),
+  /// else none.
+  AxisymPrestretch prestretch(int e) const {
+    if (part.point_prestretch.empty()) return {Eigen::Vector2d::Ones(), Eigen::Vector2d::Ones()};
+    const std::size_t i = 2 * static_cast<std::size_t>(first_element + e);
+    const Eigen::Matrix2d &P0 = part.point_prestretch.at(i), &P1 = part.point_prestretch.at(i + 1);
+    return {P0.diagonal(), P1.diagonal()};
+  }
   void internal(int e, const State& s, Vector& f, Matrix* K) const {
-    axisym_membrane(s.X, s.x, thickness(e), *part.material, f, K);
+    axisym_membrane(s.X, s.x, thickness(e), prestretch(e), *part.material, f, K);
   }
   double length2(const Model&, const int*, const State& s) const {
     return std::max((s.X.col(1) - s.X.col(0)).squaredNorm(), s.x.colwise().squaredNorm().maxCoeff());
@@ -78,7 +86,7 @@ struct AxisymMembraneKernel : PlaneKinematics<2> {
   void points(int e, const State& s, std::vector<MembranePoint>& out) const {
     Vector f;
     std::array<MembranePoint, 2> pts;
-    axisym_membrane(s.X, s.x, thickness(e), *part.material, f, nullptr, &pts);
+    axisym_membrane(s.X, s.x, thickness(e), prestretch(e), *part.material, f, nullptr, &pts);
     out.insert(out.end(), pts.begin(), pts.end());
   }
 };

@@ -40,7 +40,8 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
   std::vector<MembraneReference<N>> out;
   out.reserve(block.size());
   SurfaceNodes<N> X;
-  const std::size_t first_point = part.point_thickness.empty() ? 0 : first_point_of(part, block);
+  const std::size_t first_point =
+      part.point_thickness.empty() && part.point_prestretch.empty() ? 0 : first_point_of(part, block);
   for (int e = 0; e < block.size(); ++e) {
     const int* n = block.element(e);
     for (int a = 0; a < N; ++a) X.col(a) = model.X[n[a]];
@@ -53,6 +54,15 @@ std::vector<MembraneReference<N>> block_references(const Model& model, const Par
           const double H = part.point_thickness.at(first_point + static_cast<std::size_t>(e) * MembraneReference<N>::Q + q);
           ref.weight[q] *= H / ref.thickness[q];
           ref.thickness[q] = H;
+        }
+      }
+      // A prestretch P from a prestress step (13.20): the stress-free coordinates s̃ with s = P s̃, so
+      // ∂N/∂s̃ = ∂N/∂s P and the stress-free volume w_q dA H̃ / det P, dA the mesh's area element.
+      if (!part.point_prestretch.empty()) {
+        MembraneReference<N>& ref = out.back();
+        for (int q = 0; q < MembraneReference<N>::Q; ++q) {
+          prestretch_reference<N>(
+              ref, q, part.point_prestretch.at(first_point + static_cast<std::size_t>(e) * MembraneReference<N>::Q + q));
         }
       }
     } catch (const BadElement& err) {

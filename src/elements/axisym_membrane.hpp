@@ -27,5 +27,13 @@ void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, double H, const
 void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, const std::array<double, 2>& H,
                      const MembraneMaterial& material, Eigen::Vector4d& f, Eigen::Matrix4d* K,
                      std::array<MembranePoint, 2>* points = nullptr);
+/// The hoop and meridian prestretch (P_θ, P_s) of a Gauss point (a prestress step, theory manual
+/// (13.23)): the stress-free radius and length element are R/P_θ and dS/P_s.
+using AxisymPrestretch = std::array<Eigen::Vector2d, 2>;
+/// The same with a prestretch at each Gauss point q: λ_θ = P_θ r/R, λ_s = P_s ℓ/L, and the reference
+/// volume element H[q] 2π (R/P_θ)(dS/P_s) (theory manual (13.23)).
+void axisym_membrane(const AxisymNodes& X, const AxisymNodes& x, const std::array<double, 2>& H,
+                     const AxisymPrestretch& prestretch, const MembraneMaterial& material, Eigen::Vector4d& f,
+                     Eigen::Matrix4d* K, std::array<MembranePoint, 2>* points = nullptr);
 
 }  // namespace tunica

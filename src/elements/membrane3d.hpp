@@ -53,6 +53,14 @@ struct MembraneReference {
   std::array<double, Q> thickness{};                 ///< reference thickness H
 };
 
+/// Gauss point q of `ref` made one of a prestressed reference (theory manual (13.20)): the stress-free
+/// coordinates s̃ with s = P s̃, so ∂N/∂s̃ = (∂N/∂s) P and the stress-free volume element the weight / det P.
+template <int N>
+void prestretch_reference(MembraneReference<N>& ref, int q, const Eigen::Matrix2d& P) {
+  ref.dNds[q] = ref.dNds[q] * P;
+  ref.weight[q] /= P.determinant();
+}
+
 /// Why a reference element cannot be used.
 class BadElement : public std::domain_error {
 public:

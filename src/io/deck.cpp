@@ -29,6 +29,8 @@
 #include "io/unitless_values.hpp"
 #include "io/yaml_syntax.hpp"
 #include "mesh/meridian.hpp"
+#include "model/axis_pole_check.hpp"
+#include "model/coincident_nodes_check.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/wall_thickness_check.hpp"
 #include "model/symmetry_plane_check.hpp"
@@ -151,16 +153,27 @@ const ComponentSpec& step_spec() {
                                 "its `increments`, with cut-backs) and moves X_{k+1} = X_k − ω (x(X_k) − x̂), until "
                                 "every node lands within `fixed_point_tolerance` of x̂; it costs a forward solve per "
                                 "iteration and its rate is linear, faster for a stiffer membrane. Each iteration "
-                                "is a row of fixed_point.csv"),
-                           {"direct", "fixed_point"}),
+                                "is a row of fixed_point.csv. `prestress` (§13.2): no zero-pressure geometry; the "
+                                "imaged geometry stays the reference and each Gauss point carries the prestretch that "
+                                "balances the loads (the updated-prestrain method): forward solves from the imaged "
+                                "geometry ramp the loads in the step's `increments`, each followed by an update of the "
+                                "prestretch, and then hold them until a solve moves no node farther than "
+                                "`fixed_point_tolerance`; each solve is a row of fixed_point.csv. The steps after it "
+                                "start from the imaged geometry with that prestress (displacements from it); its "
+                                "prescribed values must be 0"),
+                           {"direct", "fixed_point", "prestress"}),
                     "direct"),
        with_default(positive(number("fixed_point_tolerance", Dimension::dimensionless,
                                     "`method: fixed_point`: stop when the largest nodal distance |x(X_k) − x̂| is at "
-                                    "most this times the diagonal of the imaged geometry's bounding box")),
-                    "1e-8"),
+                                    "most this times the diagonal of the imaged geometry's bounding box; `method: "
+                                    "prestress`: stop when a solve at the imaged loads moves no node farther (its "
+                                    "default: 1e-4)")),
+                    "1e-6"),
        with_default(at_most(at_least(integer("fixed_point_iterations",
                                              "`method: fixed_point`: the most iterations (forward solves); a run "
-                                             "that has not reached `fixed_point_tolerance` after them stops (exit 3)"),
+                                             "that has not reached `fixed_point_tolerance` after them stops (exit 3). "
+                                             "`method: prestress`: the most solves at the imaged loads after the "
+                                             "ramp (its default: 200)"),
                                      1),
                             1e6),
                     "50"),
@@ -171,9 +184,10 @@ const ComponentSpec& step_spec() {
                     "1"),
        with_default(one_of(text("acceleration",
                                 "`method: fixed_point`: `none` (ω fixed) or `aitken` (ω from Aitken's Δ² each "
-                                "iteration, (13.17))"),
+                                "iteration, (13.17)); `method: prestress`: the same on the update of the prestretch "
+                                "(13.24)"),
                            {"none", "aitken"}),
-                    "none"),
+                    "aitken"),
        required(at_most(at_least(integer("increments", "number of equal increments"), 1), 1e6)),
        structured("set", "map", "boundary or load names → their values at the end of the step"),
        structured("volume_control", "map",
@@ -595,19 +609,35 @@ void read_steps(const DeckNode& deck, Model& m, const SolverSettings& solver) {
     s.name = p.text("name");
     s.inverse = p.text("type") == "inverse";
     if (p.text("method") == "fixed_point") s.inverse_method = Step::InverseMethod::fixed_point;
+    if (p.text("method") == "prestress") s.inverse_method = Step::InverseMethod::prestress;
     s.fixed_point.tolerance = p.number("fixed_point_tolerance");
     s.fixed_point.max_iterations = static_cast<int>(p.integer("fixed_point_iterations"));
     s.fixed_point.relaxation = p.number("relaxation");
     s.fixed_point.aitken = p.text("acceleration") == "aitken";
+    // The prestress method's own defaults (theory manual §13.2): its solves approach the imaged
+    // geometry slowly along modes of little material stiffness, a distance of 1e-4 of the model's
+    // size is far below what an image resolves, and each solve is one increment.
+    if (s.inverse_method == Step::InverseMethod::prestress) {
+      if (!node.has("fixed_point_tolerance")) s.fixed_point.tolerance = 1e-4;
+      if (!node.has("fixed_point_iterations")) s.fixed_point.max_iterations = 200;
+    }
     for (const char* key : {"method", "fixed_point_tolerance", "fixed_point_iterations", "relaxation", "acceleration"}) {
       if (!node.has(key)) continue;
       if (!s.inverse)
         node[key].fail(fmt::format("`{}` is a key of inverse steps (`type: inverse`), and step '{}' is a forward step",
                                    key, s.name));
-      if (std::string(key) != "method" && s.inverse_method != Step::InverseMethod::fixed_point)
-        node[key].fail(fmt::format("`{}` is a key of the fixed-point method: add `method: fixed_point` to step '{}' "
-                                   "(the default `method: direct` takes none)",
-                                   key, s.name));
+      const bool iterative_key = std::string(key) == "fixed_point_tolerance" ||
+                                 std::string(key) == "fixed_point_iterations" || std::string(key) == "acceleration";
+      const bool fits = std::string(key) == "method" || s.inverse_method == Step::InverseMethod::fixed_point ||
+                        (iterative_key && s.inverse_method == Step::InverseMethod::prestress);
+      if (!fits)
+        node[key].fail(fmt::format("`{}` is a key of the fixed-point method{}: add `method: fixed_point` to step '{}' "
+                                   "({})",
+                                   key, iterative_key ? " and the prestress method" : "", s.name,
+                                   s.inverse_method == Step::InverseMethod::prestress
+                                       ? "`method: prestress` takes `fixed_point_tolerance`, `fixed_point_iterations` "
+                                         "and `acceleration` only"
+                                       : "the default `method: direct` takes none"));
     }
     s.increments = static_cast<int>(p.integer("increments"));
     s.solver = read_solver(node["solver"], m.units, solver);
@@ -954,6 +984,12 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     if (t.impossible) thickness.fail(t.message);
     m.warnings.push_back(format_location(thickness.where(), t.message));
   }
+  // Two parts that touch at nodes they do not share: at the second part.
+  for (const CoincidentNodes& w : coincident_node_warnings(m))
+    m.warnings.push_back(format_location(deck["parts"][m.parts[w.part_b].name].where(), w.message));
+  // An axisymmetric membrane's pole whose r is free: at the part.
+  for (const PoleMisfit& w : free_pole_warnings(m))
+    m.warnings.push_back(format_location(deck["parts"][m.parts[w.part].name].where(), w.message));
   // A symmetry boundary that holds another DOF than the plane its nodes lie on: at the boundary.
   for (const SymmetryMisfit& s : symmetry_name_warnings(m))
     m.warnings.push_back(format_location(m.boundaries[s.boundary].where, s.message));

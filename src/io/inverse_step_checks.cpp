@@ -50,7 +50,23 @@ void check_inverse_step(const DeckNode& node, const Model& m, const Step& step) 
                                            "(a prescribed value becomes the opposite displacement); rename one",
                                            name));
     }
-  // The fixed point's linear systems are the forward problem's (13.15), symmetric where it is.
+  // The prestress method keeps the imaged geometry as the reference: a prescribed value holds a
+  // node off it, which no prestress balances (theory manual §13.2).
+  if (step.inverse_method == Step::InverseMethod::prestress)
+    for (const auto& target : step.targets) {
+      const std::string& name = target.first;  // a named variable: lambdas may not capture a structured binding (clang)
+      const double value = target.second;
+      const bool boundary = std::any_of(m.boundaries.begin(), m.boundaries.end(), [&](auto& b) { return b.name == name; });
+      if (boundary && value != 0)
+        node["set"][name].fail(fmt::format("`method: prestress` keeps the imaged geometry as the reference, and "
+                                           "boundary '{}' would move its nodes off it, which no prestress "
+                                           "balances (theory manual §13.2). A value that places the zero-pressure "
+                                           "reference (an axial prestretch held by the ends) needs `method: direct` "
+                                           "or `fixed_point`, which find that reference; with ends held where they "
+                                           "are imaged, prescribe 0",
+                                           name));
+    }
+    // The fixed point's linear systems are the forward problem's (13.15), symmetric where it is.
   if (step.solver.linear_solver == "cholmod" && step.inverse_method == Step::InverseMethod::direct)
     (node.has("solver") && node["solver"].has("linear_solver") ? node["solver"]["linear_solver"] : type)
         .fail("the tangent of an inverse step is not symmetric, and cholmod takes symmetric tangents only: use "

@@ -171,6 +171,10 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
     if (!std::filesystem::is_regular_file(path, ec)) fail("cannot read the Gmsh script: no such regular file");
   }
   std::lock_guard<std::mutex> lock(gmsh_mutex);
+  // The handlers first: a signal from the moment the temporary folder (and its lock) exists is
+  // remembered and ends the meshing below, which removes the folder (a signal before them would end
+  // the process and leave it).
+  SignalGuard signals;
   TempDir dir;
   const std::string out = dir.path + "/mesh.msh";
   int fds[2];
@@ -182,7 +186,6 @@ static std::string mesh_in_child(const std::string& path, const GeoMeshFormat& f
   std::vector<char*> argv{program.data(), script.data(), target.data(), version.data(), binary.data(), nullptr};
   std::fflush(nullptr);
   const pid_t parent = ::getpid();
-  SignalGuard signals;
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);

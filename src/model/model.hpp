@@ -119,6 +119,11 @@ struct Part {
   /// set when the reference of an imaged_thickness part is adopted after its inverse step ((13.14));
   /// empty: H = `thickness` everywhere.
   std::vector<double> point_thickness;
+  /// The prestretch P of each membrane Gauss point (element-major, in block order, as System::points),
+  /// set by a prestress step (theory manual §13.2): P maps the point's stress-free tangent plane onto
+  /// the mesh's, in the coordinates of the material frame (e₁, e₂), so that the stretch from the
+  /// stress-free state is F P, C = Pᵀ FᵀF P (13.20); axisymmetric: diag(P_θ, P_s) (13.23). Empty: none (P = I).
+  std::vector<Eigen::Matrix2d> point_prestretch;
   int shell_meridian_points = 3;           ///< shells: Gauss points along each element's meridian
   int shell_thickness_points = 5;          ///< shells: Gauss points through the thickness
   std::vector<ElementBlock> blocks;        ///< axisymmetric membrane: one axisym2 block; solid: one solid4
@@ -229,9 +234,15 @@ struct Step {
   bool inverse = false;
   /// How an inverse step finds X (theory manual §13): `direct`, Newton on the inverse residual of the
   /// inverse elements (13.1)–(13.8); `fixed_point`, the backward-displacement iteration of §13.1,
-  /// X_{k+1} = X_k − ω_k (x(X_k) − x̂) with a forward solve from X_k per iteration (13.15).
-  enum class InverseMethod { direct, fixed_point } inverse_method = InverseMethod::direct;
-  /// The fixed point's settings (inverse_method == fixed_point).
+  /// X_{k+1} = X_k − ω_k (x(X_k) − x̂) with a forward solve from X_k per iteration (13.15);
+  /// `prestress`, the imaged geometry stays the reference and carries a prestretch per Gauss point
+  /// (the updated-prestrain method of §13.2, (13.20)–(13.24)), with no zero-pressure X.
+  enum class InverseMethod { direct, fixed_point, prestress } inverse_method = InverseMethod::direct;
+  /// An inverse step that computes a zero-pressure reference X (direct, fixed point): its unknowns
+  /// move the reference, and the steps after it continue on X (13.10). A prestress step does not.
+  bool moves_reference() const { return inverse && inverse_method != InverseMethod::prestress; }
+  /// The fixed point's settings (inverse_method == fixed_point; tolerance and max_iterations also
+  /// those of the prestress method's iterations at the imaged loads).
   struct FixedPoint {
     double tolerance = 1e-8;   ///< stop at max_n |x(X_k) − x̂| ≤ tolerance × the imaged bounding-box diagonal
     int max_iterations = 50;   ///< fixed-point iterations at most

@@ -10,8 +10,11 @@
 
 namespace tunica {
 
-/// Removes every file of an earlier run from `directory` (a fresh run); returns how many.
+/// Removes every file of an earlier run from `directory` (a fresh run); returns how many. A file of
+/// one of those names that does not start as Tunica writes it (a user's own history.csv) stays.
 int remove_earlier_run(const std::string& directory);
+/// After remove_earlier_run: a file left in `directory` under a name Tunica writes (a user's), or "".
+std::string foreign_file(const std::string& directory);
 /// Removes the frames numbered `first_frame` and above and every temporary (a resumed run:
 /// what was written after the checkpoint it continues from); returns how many.
 int remove_after_checkpoint(const std::string& directory, long first_frame);

@@ -13,7 +13,8 @@ namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 6";
+constexpr const char* kMagic = "tunica-restart 7";
+constexpr const char* kMagicWithoutPrestress = "tunica-restart 6";
 constexpr const char* kMagicWithoutReference = "tunica-restart 5";
 constexpr const char* kMagicWithoutTrace = "tunica-restart 4";
 constexpr const char* kMagicWithoutFingerprint = "tunica-restart 3";
@@ -151,6 +152,8 @@ std::string restart_text(const RestartRecord& r) {
   // After an inverse step, the reference it computed, as its shift from the deck's positions.
   put(s, "reference_shift",
       std::vector<double>(c.reference_shift.data(), c.reference_shift.data() + c.reference_shift.size()));
+  // After a prestress step, its prestretch and stress-free thickness per Gauss point.
+  put(s, "prestress", c.prestress);
   return s + fmt::format("checksum {:08x}\n", crc32_of(s));
 }
 
@@ -158,17 +161,18 @@ RestartRecord read_restart(const std::string& path) {
   const std::string text = read_file_bounded(path, kMaxRestartBytes, "restart file");
   Reader in(path, text);
   RestartRecord r;
-  bool has_trace = false, has_reference = false;
+  bool has_trace = false, has_reference = false, has_prestress = false;
   {
     const std::string first = text.substr(0, text.find('\n'));
     r.has_fingerprint = first != kMagicWithoutFingerprint;
-    has_reference = first == kMagic;
+    has_prestress = first == kMagic;
+    has_reference = has_prestress || first == kMagicWithoutPrestress;
     has_trace = has_reference || first == kMagicWithoutReference;
-    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutReference &&
-        first != kMagicWithoutTrace && r.has_fingerprint)
+    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutPrestress &&
+        first != kMagicWithoutReference && first != kMagicWithoutTrace && r.has_fingerprint)
       in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic +
-              "', '" + kMagicWithoutReference + "', '" + kMagicWithoutTrace + "' and '" + kMagicWithoutFingerprint +
-              "')");
+              "', '" + kMagicWithoutPrestress + "', '" + kMagicWithoutReference + "', '" + kMagicWithoutTrace +
+              "' and '" + kMagicWithoutFingerprint + "')");
     if (first.rfind("tunica-restart ", 0) != 0) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
   }
   in.line("tunica-restart");
@@ -232,6 +236,10 @@ RestartRecord read_restart(const std::string& path) {
   if (has_reference) {
     const auto shift = in.vector("reference_shift");
     c.reference_shift = Eigen::Map<const Eigen::VectorXd>(shift.data(), static_cast<Eigen::Index>(shift.size()));
+  }
+  if (has_prestress) {
+    c.prestress = in.vector("prestress");
+    if (c.prestress.size() % 5 != 0) in.fail("'prestress' takes 5 values per Gauss point");
   }
   if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");
   // Last: the CRC-32 of every byte before this line. A restart file edited by hand or damaged

@@ -113,7 +113,7 @@ std::string check_restart_fits(const Model& m, const RestartRecord& r, const std
   // Past an inverse step (theory manual (13.10)) the state is a displacement from the reference that
   // step computed, which the restart file records as `reference_shift`: without it the run would
   // continue on the deck's imaged positions as its reference.
-  const bool past_inverse = !m.steps.empty() && m.steps.front().inverse && c.step > 0;
+  const bool past_inverse = !m.steps.empty() && m.steps.front().moves_reference() && c.step > 0;
   if (past_inverse && c.reference_shift.size() != m.num_dofs())
     throw InputError(
         {file, 0, 0, ""},
@@ -122,6 +122,23 @@ std::string check_restart_fits(const Model& m, const RestartRecord& r, const std
                     "is not known, and continuing on the deck's imaged geometry as the reference would be wrong. Run "
                     "the deck again from the start (`tunica run {} -o <new folder>`).",
                     folder, m.steps.front().name, c.reference_shift.size(), m.num_dofs(), m.deck_file));
+  // Past a prestress step (theory manual §13.2) the state is one of the prestressed imaged geometry,
+  // whose prestretch per Gauss point the restart file records as `prestress`.
+  // (A run of the prestress step alone ends in it, at step fraction 1, with its prestress.)
+  const bool past_prestress = !m.steps.empty() && m.steps.front().inverse && !m.steps.front().moves_reference() &&
+                              (c.step > 0 || c.fraction >= 1.0 - 1e-12);
+  if (past_prestress && c.prestress.empty())
+    throw InputError({file, 0, 0, ""},
+                     fmt::format("the run in {} is past the prestress step '{}', and its restart file records no "
+                                 "`prestress`: the prestretch the later steps continue with is not known. Run the deck "
+                                 "again from the start (`tunica run {} -o <new folder>`).",
+                                 folder, m.steps.front().name, m.deck_file));
+  if (!past_prestress && !c.prestress.empty())
+    throw InputError({file, 0, 0, ""},
+                     fmt::format("the run in {} records a `prestress` (a prestress step's), but this deck's step {} is "
+                                 "not after a prestress step: it is another deck's run. Run this deck in a fresh output "
+                                 "folder (`tunica run {} -o <new folder>`).",
+                                 folder, c.step + 1, m.deck_file));
   if (!past_inverse && c.reference_shift.size() > 0)
     throw InputError({file, 0, 0, ""},
                      fmt::format("the run in {} records a `reference_shift` (a reference computed by an inverse step), "

@@ -59,6 +59,10 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
     return;
   }
   const int removed = remove_earlier_run(dir_);
+  if (const std::string other = foreign_file(dir_); !other.empty())
+    throw std::runtime_error("'" + other + "' is not a file Tunica wrote (it does not start as Tunica's file of that "
+                             "name does), and this run would write over it: move it away, or write the run into "
+                             "another folder (-o)");
   if (removed > 0 && progress_)
     std::fprintf(progress_, "removed the %d file(s) of an earlier Tunica run in %s\n", removed, dir_.c_str());
   history_.create(dir_, "history.csv", history_header_);
@@ -207,7 +211,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   note_penetration(analysis, info);
   // The end of an inverse step: its zero-pressure geometry (reference_mesh.hpp), written before the
   // steps after it continue on it as their reference (Analysis): the deck's positions and its unknowns.
-  if (info.step > 0 && info.fraction >= 1.0 - 1e-12 && model_.steps[info.step - 1].inverse)
+  if (info.step > 0 && info.fraction >= 1.0 - 1e-12 && model_.steps[info.step - 1].moves_reference())
     write_file_atomically(dir_ + "/" + reference_mesh_name(model_, info.step - 1),
                           reference_mesh_text(model_, analysis.displacement()));
   last_ = RestartRecord{analysis.checkpoint(), history_rows_, newton_rows_, frames_, model_.deck_file, {}, model_.fingerprint};

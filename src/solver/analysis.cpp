@@ -2,6 +2,7 @@
 
 #include "assembly/pressure_load_checks.hpp"
 #include "solver/failure_hints.hpp"
+#include "solver/forward_solve_counter.hpp"
 
 #include <fmt/format.h>
 
@@ -41,7 +42,7 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int
   // (13.14). The Gauss-point states of the inverse problem give it, in System::points order.
   int inverse_step = -1;
   for (int s = 0; s < static_cast<int>(deck_model_.steps.size()); ++s)
-    if (deck_model_.steps[s].inverse) inverse_step = s;
+    if (deck_model_.steps[s].moves_reference()) inverse_step = s;
   std::unique_ptr<System> deck_system;
   for (int p = 0; p < static_cast<int>(m->parts.size()); ++p) {
     if (!m->parts[p].imaged_thickness || inverse_step < 0) continue;
@@ -60,9 +61,13 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int
     for (const Boundary& b : m->boundaries)
       if (auto it = step.targets.find(b.name); it != step.targets.end()) it->second = -it->second;
   }
+  install_model(std::move(m));
+}
+
+void Analysis::install_model(std::unique_ptr<Model> m) {
   system_.reset();
   own_model_ = std::move(m);
-  model_ = own_model_.get();
+  model_ = own_model_ ? own_model_.get() : &deck_model_;
   system_ = std::make_unique<System>(*model_);
   orientation_volume_.clear();
   reference_volume_.clear();
@@ -88,33 +93,6 @@ void Analysis::leave_inverse_step() {
   update_reactions();
 }
 
-namespace {
-
-/// Counts what the forward solve of a fixed-point iteration does and passes its Newton iterations,
-/// cut-backs and retries on; its converged increments are not states of the run.
-class ForwardSolveCounter final : public AnalysisObserver {
-public:
-  explicit ForwardSolveCounter(AnalysisObserver& outer) : outer_(outer) {}
-  int increments = 0, newton_iterations = 0, cutbacks = 0;
-  void on_iteration(const IncrementInfo& i, const IterationRecord& r) override { outer_.on_iteration(i, r); }
-  void on_cutback(const IncrementInfo& i, const std::string& why) override {
-    ++cutbacks;
-    outer_.on_cutback(i, why);
-  }
-  void on_retry(const IncrementInfo& i, const std::string& why, const std::string& how) override {
-    outer_.on_retry(i, why, how);
-  }
-  void on_increment(const Analysis&, const IncrementInfo& i) override {
-    ++increments;
-    newton_iterations += i.iterations;
-  }
-  bool stop_requested() override { return outer_.stop_requested(); }
-
-private:
-  AnalysisObserver& outer_;
-};
-
-}  // namespace
 
 void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   // Resumed from the checkpoint at the step's end: X is in state_.u already.
@@ -133,28 +111,14 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   for (std::size_t k = 0; k < deck.loads.size(); ++k)
     if (auto it = step.targets.find(deck.loads[k].name); it != step.targets.end()) end.pressure[k] = it->second;
   // The model's size: the diagonal of the imaged bounding box.
-  Eigen::Vector3d lo = deck.X.front(), hi = deck.X.front();
-  for (const auto& x : deck.X) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double goal = fp.tolerance * (hi - lo).norm();
+  const double diagonal = imaged_diagonal();
+  const double goal = fp.tolerance * diagonal;
   const int dim = deck.dofs_per_node(), nodes = deck.num_nodes();
-  const auto back_to_deck = [&] {
-    system_.reset();
-    own_model_.reset();
-    model_ = &deck_model_;
-    system_ = std::make_unique<System>(*model_);
-    orientation_volume_.clear();
-    reference_volume_.clear();
-    for (int l = 0; l < static_cast<int>(model_->loads.size()); ++l) {
-      orientation_volume_.push_back(volume_sign_is_orientation(*model_, l));
-      reference_volume_.push_back(system_->volume(Eigen::VectorXd::Zero(model_->num_dofs()), l));
-    }
-  };
+  const auto back_to_deck = [&] { install_model(nullptr); };
   // X_0 = x̂ (shift 0); X_k = x̂ + shift.
   Eigen::VectorXd shift = Eigen::VectorXd::Zero(deck.num_dofs()), previous;
   double omega = fp.relaxation, max_distance = 0;
+  std::vector<double> distances;  // max_n |r_n| of each iteration
   for (int k = 1;; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
@@ -183,15 +147,33 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
       // step's start again, on the deck's model.
       back_to_deck();
       state_ = start;
-      throw SolveError(
-          std::string(e.what()) +
-          (k == 1 ? " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
-                    "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
-                    "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes no "
-                    "such detour"
-                  : fmt::format(" The forward solve of fixed-point iteration {} starts from the reference the update "
-                                "(13.16) gave; a `relaxation` below 1 (now {:g}) keeps the updates shorter",
-                                k, fp.relaxation)));
+      if (k == 1)
+        throw SolveError(std::string(e.what()) +
+                         " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
+                         "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
+                         "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes "
+                         "no such detour");
+      // Past the first iteration the forward solve starts from a reference the update (13.16) gave: the
+      // hints of a solve from a deck's own reference do not apply, the course of the distance does.
+      std::string what = e.what();
+      if (const auto h = what.find(" Hint:"); h != std::string::npos) what.erase(h);
+      const auto smallest = std::min_element(distances.begin(), distances.end());
+      const std::string unit = deck.units.display_unit(Dimension::length);
+      const auto len = [&](double v) { return deck.units.from_internal(v, unit, Dimension::length); };
+      const bool growing = distances.size() >= 2 && distances.back() > distances[distances.size() - 2] &&
+                           distances.back() > 2 * *smallest;
+      throw SolveError(fmt::format(
+          "{} The forward solve of fixed-point iteration {} starts from the reference the update (13.16) gave. The "
+          "largest distance from the imaged positions was {:.4g} {} after iteration 1, {:.4g} {} at its smallest "
+          "(iteration {}) and {:.4g} {} after iteration {}{}. Hint: {} keeps the updates shorter; an imaged mesh that is no equilibrium shape of the discrete membrane (a surface laid on "
+          "an ideal or segmented shape) has no exact fixed point, and `method: prestress` (theory manual §13.2), "
+          "which keeps the imaged geometry as the reference, converges on such meshes (its mean stress is right, its "
+          "peak can be off: user guide §3.5)",
+          what, k, len(distances.front()), unit, len(*smallest), unit, smallest - distances.begin() + 1,
+          len(distances.back()), unit, k - 1, growing ? ": the iteration was diverging" : "",
+          fp.aitken ? fmt::format("`acceleration: none` with a `relaxation` below 1 (Aitken's last factor was {:.3g})",
+                                  omega)
+                    : fmt::format("a `relaxation` below 1 (now {:g}) or `acceleration: aitken`", fp.relaxation)));
     } catch (...) {
       back_to_deck();
       state_ = start;
@@ -208,6 +190,7 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
       max_distance = std::max(max_distance, std::sqrt(d2));
     }
     const bool converged = max_distance <= goal;
+    distances.push_back(max_distance);
     // Aitken's Δ² on the relaxation (13.17), from the second iteration on.
     if (!converged && fp.aitken && previous.size() > 0) {
       const Eigen::VectorXd dr = r - previous;
@@ -240,12 +223,14 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
           "solution from the last reference is still {:.4g} {} from the imaged positions at its farthest node "
           "({:.4g} {} root mean square), above the tolerance {:.4g} {} (fixed_point_tolerance {:g} × the imaged "
           "bounding-box diagonal {:.6g} {}). The files of the run so far are kept; fixed_point.csv lists the distance "
-          "per iteration. If it is still falling, raise `fixed_point_iterations` or try `acceleration: aitken` (or a "
-          "`relaxation` below 1 if it oscillates); if it stagnates, the imaged shape may not be an equilibrium shape "
+          "per iteration. If it is still falling, raise `fixed_point_iterations`{}; if it stagnates, the imaged shape may not be an equilibrium shape "
           "of the discrete membrane (theory manual §13), and a larger `fixed_point_tolerance` accepts the "
-          "nearest reference found",
+          "nearest reference found, or `method: prestress` (§13.2) reaches the imaged geometry itself (user guide "
+          "§3.5 on its peak stresses)",
           s + 1, step.name, k, len(max_distance), unit, len(rec.rms_distance), unit, len(goal), unit, fp.tolerance,
-          len((hi - lo).norm()), unit));
+          len(diagonal), unit,
+          fp.aitken ? " (Aitken's acceleration is on; if it oscillates, `acceleration: none` with a `relaxation` below 1)"
+                    : " or try `acceleration: aitken` (or a `relaxation` below 1 if it oscillates)"));
     }
     previous = r;
     // X_{k+1} = X_k − ω_k r_k (13.16); a prescribed DOF keeps X = x̂ + v exactly.
@@ -256,20 +241,34 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
   back_to_deck();
   state_ = start;
   state_.u = shift;
+  end_iterative_step(observer, end, 0);
+}
+
+void Analysis::end_iterative_step(AnalysisObserver& observer, const LoadState& end, int iterations) {
   state_.loads = end;
   update_volumes();
-  state_.trace.restart_at(start.step_start);
+  state_.trace.restart_at(state_.step_start);
   state_.trace.push(state_.loads);
   state_.fraction = 1;
   state_.increment = 1;
   update_reactions();
   IncrementInfo info;
-  info.step = s + 1;
-  info.step_name = step.name;
+  info.step = state_.step + 1;
+  info.step_name = deck_model_.steps[state_.step].name;
   info.increment = 1;
   info.fraction = 1;
-  info.time = static_cast<double>(s) + 1;
+  info.time = static_cast<double>(state_.step) + 1;
+  info.iterations = iterations;
   observer.on_increment(*this, info);
+}
+
+double Analysis::imaged_diagonal() const {
+  Eigen::Vector3d lo = deck_model_.X.front(), hi = deck_model_.X.front();
+  for (const auto& x : deck_model_.X) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return (hi - lo).norm();
 }
 
 std::string Analysis::eversion(const Eigen::VectorXd& u, int& load) const {
@@ -305,8 +304,9 @@ void Analysis::update_reactions() {
 void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
   if (resume) {
     state_ = *resume;
-    // Past an inverse step: the reference it computed (the restart file records it).
+    // Past an inverse step: the reference it computed, or the prestress (the restart file records them).
     if (state_.reference_shift.size() > 0) adopt_reference(state_.reference_shift);
+    if (!state_.prestress.empty()) adopt_prestress(state_.prestress);
     // Which parts are active follows from the step (restart files do not store it).
     state_.loads.step = state_.step_start.step = state_.step;
     update_reactions();
@@ -318,10 +318,13 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     const Step& step = model_->steps[state_.step];
     if (step.inverse && step.inverse_method == Step::InverseMethod::fixed_point)
       run_fixed_point_step(observer);
+    else if (step.inverse && step.inverse_method == Step::InverseMethod::prestress)
+      run_prestress_step(observer);
     else
       run_step(observer);
-    // An inverse step that is the last step keeps its own state (u = X − x̂ on the deck's positions).
-    if (model_->steps[state_.step].inverse && state_.step + 1 < static_cast<int>(model_->steps.size()))
+    // An inverse step that is the last step keeps its own state (u = X − x̂ on the deck's positions);
+    // a prestress step's state is already one of the steps after it (on the prestressed copy).
+    if (deck_model_.steps[state_.step].moves_reference() && state_.step + 1 < static_cast<int>(model_->steps.size()))
       leave_inverse_step();
     state_.step_start = state_.loads;
     state_.fraction = 0;
@@ -376,8 +379,21 @@ void Analysis::run_step(AnalysisObserver& observer) {
     // under volume control, (7.10);
     // an attempt it fails is retried once at the same size with the plain tangent before any
     // cut-back, so that the default is never worse than `stress_free_start: exact`.
+    // The first increment of a step that raises a pressure from zero, after steps without one (a
+    // prestretch alone), starts as from rest too: the wall may carry no tension across the coming
+    // load (a tube stretched axially alone has no hoop tension) and ovalizes freely (user guide §3.1).
+    bool pressure_from_zero = t == 0 && vc.load < 0;
+    if (pressure_from_zero) {
+      bool raised = false;
+      for (std::size_t k = 0; k < start.pressure.size(); ++k) {
+        if (start.pressure[k] != 0) pressure_from_zero = false;
+        if (end.pressure[k] != 0) raised = true;
+      }
+      pressure_from_zero = pressure_from_zero && raised;
+    }
     SolverSettings settings = step.solver;
-    const bool stiffened_start = settings.stiffen_stress_free_start && (state_.u.array() == 0.0).all();
+    const bool stiffened_start =
+        settings.stiffen_stress_free_start && ((state_.u.array() == 0.0).all() || pressure_from_zero);
     IncrementInfo info;
     info.step = s + 1;
     info.step_name = step.name;
@@ -397,7 +413,8 @@ void Analysis::run_step(AnalysisObserver& observer) {
       system_->apply_boundary(trial, u);
       NewtonResult r = solve_increment(*system_, *solver, trial, u, settings,
                                     [&](const IterationRecord& rec) { observer.on_iteration(info, rec); },
-                                    vc.load >= 0 ? &constraint : nullptr, &state_.u);
+                                    vc.load >= 0 ? &constraint : nullptr, &state_.u,
+                                    stiffened_start && settings.stiffen_stress_free_start);
       // A converged state whose enclosed volume changed sign is rejected like any inadmissible
       // state: the increment is cut back.
       int everted_load = -1;

@@ -49,6 +49,11 @@ struct Checkpoint {
   /// After an inverse step: the shift of the reference it computed, X − x̂ (all DOFs; x̂ the deck's
   /// positions), which the model's reference has taken on (Analysis::model()); empty before.
   Eigen::VectorXd reference_shift;
+  /// After a prestress step (Step::InverseMethod::prestress, theory manual §13.2): per membrane
+  /// Gauss point of every part (parts in order, each in System::points order) its prestretch P
+  /// (P₁₁, P₂₁, P₁₂, P₂₂) and stress-free thickness H̃, which the model's parts have taken on
+  /// (Analysis::model()); empty before.
+  std::vector<double> prestress;
 };
 
 class Analysis;
@@ -141,6 +146,25 @@ private:
   /// X_k (run_step on the copy of adopt_reference) and X_{k+1} = X_k − ω_k (x(X_k) − x̂), (13.16);
   /// ends in the state the direct method ends in (u = X − x̂ on the deck's model, the step's loads).
   void run_fixed_point_step(AnalysisObserver& observer);
+  /// Inverse step `state_.step` by the prestress method of theory manual §13.2: the imaged geometry
+  /// stays the reference; forward solves from it (run_step on the copy of adopt_prestress) ramp the
+  /// loads in the step's `increments` and then hold them, each followed by the update (13.21) of the
+  /// prestretch, until a solve moves no node farther than the tolerance (13.24). Ends at the imaged
+  /// loads on that copy, with the last solve's displacements.
+  void run_prestress_step(AnalysisObserver& observer);
+  /// Makes model() a copy of the deck's model whose membrane parts carry the prestretch and
+  /// stress-free thickness `prestress` (Checkpoint::prestress layout) and rebuilds system() on it.
+  /// `forward_of` ≥ 0: that prestress step of the copy becomes a forward step of one increment from
+  /// the current loads to `to`, named after prestress iteration `iteration`.
+  void adopt_prestress(const std::vector<double>& prestress, int forward_of = -1, int iteration = 0,
+                       const LoadState* to = nullptr);
+  /// The end of an iterative inverse step (fixed point, prestress) at state_.u: the loads `end`, the
+  /// step done in one increment of `iterations` Newton iterations, reported to `observer`.
+  void end_iterative_step(AnalysisObserver& observer, const LoadState& end, int iterations);
+  /// The diagonal of the bounding box of the deck's (imaged) positions: the model's size.
+  double imaged_diagonal() const;
+  /// Makes `m` the model (model() and a system() built on it) with the volumes that go with it.
+  void install_model(std::unique_ptr<Model> m);
   /// The end of inverse step `s`: the reference becomes the computed X (adopt_reference), the
   /// state u = x̂ − X and the prescribed values the same displacements on the new reference,
   /// at the step's loads (theory manual (13.10)).

@@ -107,6 +107,19 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
         vol(step.volume_control.target), unit, model.loads[l].name, vol(reference_volume[l]), unit,
         vol(reference_volume[l]), unit);
   }
+  // A step that stretches a 3-D membrane with no pressure on it, before or during: a closed wall then
+  // carries no hoop tension and nothing resists ovalizing (neutral stability, user guide §3.1); Newton
+  // wanders along those modes, the more the finer the mesh. A little pressure keeps the wall round.
+  if (model.dofs_per_node() == 3 && !model.loads.empty() && step.volume_control.load < 0 && converged.count() > 0 &&
+      std::all_of(attempted.pressure.begin(), attempted.pressure.end(), [](double p) { return p == 0; }) &&
+      std::all_of(converged.last(0).pressure.begin(), converged.last(0).pressure.end(), [](double p) { return p == 0; }))
+    add(fmt::format(
+        "step '{}' moves the membrane with no pressure on it: a closed or curved 3-D membrane without pressure carries "
+        "no tension across the stretch and has no stiffness against ovalizing (neutral stability, user guide §3.1), so "
+        "Newton wanders along those modes, the more the finer the mesh. Apply a little pressure together with the "
+        "stretch (e.g. `{}: 10 mmHg` in this step's `set`), which keeps the wall round; the step after it raises the "
+        "pressure to its value",
+        step.name, model.loads.front().name));
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
   // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.

@@ -12,7 +12,7 @@ namespace tunica {
 NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                              const SolverSettings& settings,
                              const std::function<void(const IterationRecord&)>& on_iteration,
-                             const VolumeConstraint* constraint, const Eigen::VectorXd* converged) {
+                             const VolumeConstraint* constraint, const Eigen::VectorXd* converged, bool slack_start) {
   // The tangent's upper triangle is assembled only for a consumer that reads it: the solver (all
   // but CHOLMOD: `auto`'s symmetry test, the LU solvers), the symmetrization and the bordered
   // system. For CHOLMOD alone the lower triangle is the whole matrix it factorizes.
@@ -20,8 +20,10 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
   const bool inverse = system.inverse(loads);
   const bool upper = solver.reads_upper() || settings.symmetrize_pressure_stiffness || constraint || inverse;
   MechanicalProblem equilibrium(system, loads, u, upper);
-  // The increment starts at the stress-free reference state.
-  const bool stress_free = converged && converged->size() > 0 && (converged->array() == 0.0).all();
+  // The increment starts at the stress-free reference state, or at a state without pressure that
+  // the increment pressurizes (`slack_start`): its wall may carry no tension across the load either.
+  const bool stress_free =
+      converged && converged->size() > 0 && ((converged->array() == 0.0).all() || slack_start);
   if (constraint) {
     BorderedProblem bordered(equilibrium, loads, constraint->load, constraint->target);
     std::optional<VolumeStartStiffness> start;

@@ -32,6 +32,7 @@ struct VolumeConstraint {
 NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                              const SolverSettings& settings,
                              const std::function<void(const IterationRecord&)>& on_iteration,
-                             const VolumeConstraint* constraint = nullptr, const Eigen::VectorXd* converged = nullptr);
+                             const VolumeConstraint* constraint = nullptr, const Eigen::VectorXd* converged = nullptr,
+                             bool slack_start = false);
 
 }  // namespace tunica

@@ -2,7 +2,8 @@
 // follower pressure (theory manual §5, §6, §8):
 //  - the internal force (5.4) is the gradient of the stored energy Σ w Ŵ;
 //  - the element tangent (5.4) (material + geometric) and the pressure load
-//    stiffness (6.2) are the derivatives of the element residual R = f_int − f_p (6.3),
+//    stiffness (6.2) are the derivatives of the element residual R = f_int − f_p (6.3), with and
+//    without a prestretch per Gauss point (13.23),
 // at distorted states (hoop and meridional stretches 0.8–1.6, tilted, off-cylinder), for
 // every registered material and each of its samples (tests/support/material_registry.hpp);
 // the assembled tangent of a whole model against its assembled residual; and the pressure
@@ -53,6 +54,14 @@ void random_state(std::mt19937& rng, AxisymNodes& X, AxisymNodes& x) {
   x += 0.02 * AxisymNodes::NullaryExpr([&] { return s(rng); });
 }
 
+/// No prestretch for even k; for odd k a prestretch (P_θ, P_s) in [0.7, 1.5] at each Gauss point (a
+/// prestress step, theory manual (13.23)).
+AxisymPrestretch prestretch_of(int k, std::mt19937& rng) {
+  if (k % 2 == 0) return {Eigen::Vector2d::Ones(), Eigen::Vector2d::Ones()};
+  std::uniform_real_distribution<double> stretch(0.7, 1.5);
+  return {Eigen::Vector2d(stretch(rng), stretch(rng)), Eigen::Vector2d(stretch(rng), stretch(rng))};
+}
+
 /// The element over every registered material × sample; the frame is the element's (1 = hoop).
 class AxisymMembraneFd : public ::testing::TestWithParam<MaterialCase> {
 protected:
@@ -71,13 +80,14 @@ TEST_P(AxisymMembraneFd, InternalForceIsTheGradientOfTheStoredEnergy) {
   for (int k = 0; k < 8; ++k) {
     AxisymNodes X, x;
     random_state(rng, X, x);
-    const double H = 0.1;
+    const std::array<double, 2> H{0.1, 0.1};
+    const AxisymPrestretch P = prestretch_of(k, rng);
     Eigen::Vector4d f;
-    axisym_membrane(X, x, H, *m, f, nullptr);
+    axisym_membrane(X, x, H, P, *m, f, nullptr);
     const auto energy = [&](const Eigen::VectorXd& v) {
       Eigen::Vector4d g;
       std::array<MembranePoint, 2> pts;
-      axisym_membrane(X, nodes(v), H, *m, g, nullptr, &pts);
+      axisym_membrane(X, nodes(v), H, P, *m, g, nullptr, &pts);
       return pts[0].W * pts[0].weight + pts[1].W * pts[1].weight;
     };
     const double e = relative_error(f, fd_gradient(energy, flat(x), 1e-6));
@@ -96,17 +106,18 @@ TEST_P(AxisymMembraneFd, TangentWithPressureLoadStiffnessMatchesFiniteDifference
     for (int k = 0; k < 8; ++k) {
       AxisymNodes X, x;
       random_state(rng, X, x);
-      const double H = 0.1;
+      const std::array<double, 2> H{0.1, 0.1};
+      const AxisymPrestretch P = prestretch_of(k, rng);
       const double ps = p * tunica::test::sample_scale(*m);  // a pressure of the material's order
       const auto residual = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
         Eigen::Vector4d f, fp;
-        axisym_membrane(X, nodes(v), H, *m, f, nullptr);
+        axisym_membrane(X, nodes(v), H, P, *m, f, nullptr);
         axisym_pressure(nodes(v), ps, fp, nullptr);
         return f - fp;
       };
       Eigen::Vector4d f, fp;
       Eigen::Matrix4d K, dfp;
-      axisym_membrane(X, x, H, *m, f, &K);
+      axisym_membrane(X, x, H, P, *m, f, &K);
       axisym_pressure(x, ps, fp, &dfp);
       const double e = relative_error(K - dfp, fd_jacobian(residual, flat(x), 1e-6));
       EXPECT_LT(e, kFdTolerance) << "state " << k << ", p = " << ps;

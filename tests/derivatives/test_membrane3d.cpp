@@ -108,7 +108,17 @@ void check_derivatives(const MembraneMaterial& material, double angle, std::mt19
   constexpr int Q = SurfaceShapeTraits<N>::kPoints;
   for (int k = 0; k < 6; ++k) {
     const SurfaceNodes<N> X = random_reference<N>(rng);
-    const auto ref = membrane_reference<N>(X, 0.13, direction_rule(k, angle));
+    auto ref = membrane_reference<N>(X, 0.13, direction_rule(k, angle));
+    // Every other state with a prestretch P per Gauss point (a prestress step, theory manual (13.20)):
+    // stretches 0.7–1.5 and shear up to ±0.3, P not symmetric.
+    if (k % 2 == 1) {
+      std::uniform_real_distribution<double> stretch(0.7, 1.5), shear(-0.3, 0.3);
+      for (int q = 0; q < Q; ++q) {
+        Eigen::Matrix2d P;
+        P << stretch(rng), shear(rng), shear(rng), stretch(rng);
+        prestretch_reference<N>(ref, q, P);
+      }
+    }
     const SurfaceNodes<N> x = random_current<N>(rng, X);
     ElementVector<N> f;
     ElementMatrix<N> K;

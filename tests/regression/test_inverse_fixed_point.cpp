@@ -54,9 +54,14 @@ std::string octant_deck(int n, double p) {
 }
 
 /// `deck`'s step `step_name` made an inverse one, with `keys` (e.g. "method: fixed_point") added.
+/// A fixed point without `acceleration` is given `acceleration: none` (ω = relaxation): the tests of
+/// plain iterations say so, Aitken's being the default.
 std::string inverse_of(const std::string& deck, const std::string& step_name, const std::string& keys) {
+  std::string k = keys;
+  if (k.find("method: fixed_point") != std::string::npos && k.find("acceleration") == std::string::npos)
+    k += "\n    acceleration: none";
   return replace(deck, "name: " + step_name,
-                 "name: zero_pressure\n    type: inverse" + (keys.empty() ? std::string() : "\n    " + keys));
+                 "name: zero_pressure\n    type: inverse" + (k.empty() ? std::string() : "\n    " + k));
 }
 
 std::vector<Eigen::Vector3d> positions(const Model& m, const Eigen::VectorXd& u) {
@@ -389,6 +394,10 @@ TEST(FixedPointInverse, KeysBelongToTheFixedPointOfAnInverseStep) {
   EXPECT_TRUE(m.steps[0].fixed_point.aitken);
   EXPECT_EQ(m.steps[0].fixed_point.tolerance, 1e-6);
   EXPECT_EQ(m.steps[0].fixed_point.max_iterations, 50);
+  // The defaults: Aitken's acceleration, a tolerance of 1e-6.
+  const Model d = read_deck_text(replace(forward, "name: inflate", "name: zero_pressure\n    type: inverse\n    method: fixed_point"), kAxisym);
+  EXPECT_TRUE(d.steps[0].fixed_point.aitken);
+  EXPECT_EQ(d.steps[0].fixed_point.tolerance, 1e-6);
 }
 
 TEST(FixedPointInverse, OutputFolderHoldsFixedPointCsvAndTheReferenceFile) {

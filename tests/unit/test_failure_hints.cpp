@@ -451,3 +451,32 @@ TEST(FailureHints, AVolumeTargetBelowTheStressFreeVolumeSaysItCompressesTheMembr
   EXPECT_EQ(failure_hints(m, controlled, failed("diverging", 1e9), start, trying(0)).find("stress-free volume"),
             std::string::npos);
 }
+
+TEST(FailureHints, AStretchWithoutPressureOnA3dMembraneSuggestsALittlePressure) {
+  const Model m = read_deck_text(R"(units: {length: mm, force: N}
+materials:
+  artery: {type: neo_hookean, mu: 30 kPa}
+parts:
+  wall: {element: membrane, material: artery, thickness: 0.3 mm, mesh: {type: tube, radius: 2 mm, length: 4 mm, around: 16, along: 2}}
+boundary:
+  sym_x: {node_set: wall.x0, dofs: [x]}
+  sym_y: {node_set: wall.y0, dofs: [y]}
+  base: {node_set: wall.bottom, dofs: [z]}
+  stretch: {node_set: wall.top, dofs: [z]}
+loads:
+  blood: {type: pressure, part: wall}
+steps:
+  - {name: prestretch, increments: 4, set: {stretch: 2 mm}}
+  - {name: inflate, increments: 4, set: {blood: 120 mmHg}}
+)",
+                                 "tube.yaml");
+  const StepTrace none = along({{0.0, 1.0}, {0.0, 1.0}});
+  const std::string h =
+      failure_hints(m, m.steps[0], failed("the residual is not finite", 1), none, trying(0.0));
+  EXPECT_NE(h.find("step 'prestretch' moves the membrane with no pressure on it"), std::string::npos) << h;
+  EXPECT_NE(h.find("`blood: 10 mmHg` in this step's `set`"), std::string::npos) << h;
+  // A step that raises the pressure is not one.
+  const std::string inflating =
+      failure_hints(m, m.steps[1], failed("the residual is not finite", 1), none, trying(0.001));
+  EXPECT_EQ(inflating.find("no pressure on it"), std::string::npos) << inflating;
+}

@@ -79,7 +79,7 @@ TEST(RestartFile, AFileOfFormat4IsReadWithoutATrace) {
   // What Tunica wrote before it kept the trace: the run continues, its hints start afresh.
   std::string text = restart_text(record(7));
   text = text.substr(0, text.rfind("checksum "));
-  text = test::replace(text, "tunica-restart 6\n", "tunica-restart 4\n");
+  text = test::replace(text, "tunica-restart 7\n", "tunica-restart 4\n");
   const std::size_t from = text.find("trace "), to = text.find("\nu ") + 1;
   text.erase(from, to - from);
   text.erase(text.find("reference_shift "));
@@ -92,11 +92,29 @@ TEST(RestartFile, AFileOfFormat5IsReadWithoutAReferenceShift) {
   // What Tunica wrote before steps could follow an inverse step: no reference of its own.
   std::string text = restart_text(record(7));
   text = text.substr(0, text.rfind("checksum "));
-  text = test::replace(text, "tunica-restart 6\n", "tunica-restart 5\n");
+  text = test::replace(text, "tunica-restart 7\n", "tunica-restart 5\n");
   text.erase(text.find("reference_shift "));
   const RestartRecord r = read_restart(write("format5.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
   EXPECT_EQ(r.checkpoint.reference_shift.size(), 0);
   EXPECT_EQ(r.checkpoint.trace.count(), 7);
+}
+
+TEST(RestartFile, AFileOfFormat6IsReadWithoutAPrestress) {
+  // What Tunica wrote before the prestress method of inverse steps.
+  std::string text = restart_text(record(7));
+  text = text.substr(0, text.rfind("checksum "));
+  text = test::replace(text, "tunica-restart 7\n", "tunica-restart 6\n");
+  text.erase(text.find("prestress "));
+  const RestartRecord r = read_restart(write("format6.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
+  EXPECT_TRUE(r.checkpoint.prestress.empty());
+  EXPECT_EQ(r.checkpoint.trace.count(), 7);
+}
+
+TEST(RestartFile, APrestressIsReadBack) {
+  RestartRecord rec = record(7);
+  rec.checkpoint.prestress = {1.1, 0.01, -0.02, 1.2, 0.3, 1.0, 0.0, 0.0, 1.0, 0.25};
+  const RestartRecord r = read_restart(write("prestress.txt", restart_text(rec)));
+  EXPECT_EQ(r.checkpoint.prestress, rec.checkpoint.prestress);
 }
 
 TEST(RestartFile, TheReferenceShiftOfAnInverseStepIsKeptBitForBit) {

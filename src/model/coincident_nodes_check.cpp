@@ -1,0 +1,56 @@
+#include "model/coincident_nodes_check.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "model/node_label.hpp"
+
+namespace tunica {
+
+std::vector<CoincidentNodes> coincident_node_warnings(const Model& m) {
+  std::vector<CoincidentNodes> out;
+  // The part of each node (the first that uses it; a node of two parts is shared, a joint).
+  std::vector<int> part_of(m.num_nodes(), -1);
+  for (int p = 0; p < static_cast<int>(m.parts.size()); ++p)
+    for (int n : m.parts[p].nodes)
+      if (part_of[n] < 0) part_of[n] = p;
+  std::vector<int> nodes;
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (part_of[n] >= 0) nodes.push_back(n);
+  if (nodes.size() < 2) return out;
+  double size = 0;
+  for (int n : nodes) size = std::max(size, m.X[n].cwiseAbs().maxCoeff());
+  const double tol = 1e-9 * std::max(size, 1e-300);
+  std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return m.X[a].x() < m.X[b].x(); });
+  // Per pair of parts: the first pair of nodes found and how many.
+  std::map<std::pair<int, int>, std::pair<std::pair<int, int>, int>> found;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (std::size_t j = i + 1; j < nodes.size() && m.X[nodes[j]].x() - m.X[nodes[i]].x() <= tol; ++j) {
+      const int a = nodes[i], b = nodes[j];
+      if (part_of[a] == part_of[b] || (m.X[a] - m.X[b]).norm() > tol) continue;
+      const auto key = std::minmax(part_of[a], part_of[b]);
+      auto [it, fresh] = found.try_emplace({key.first, key.second}, std::make_pair(std::make_pair(a, b), 0));
+      ++it->second.second;
+    }
+  const bool axisymmetric = m.dofs_per_node() != 3;
+  for (const auto& [parts, first] : found) {
+    const auto [a, b] = first.first;
+    const Eigen::Vector3d& x = m.X[a];
+    const std::string where = axisymmetric ? fmt::format("r = {:.6g}, z = {:.6g}", x(0), x(1))
+                                           : fmt::format("({:.6g}, {:.6g}, {:.6g})", x(0), x(1), x(2));
+    out.push_back({parts.first, parts.second,
+                   fmt::format("parts '{}' and '{}' have {} pair(s) of nodes at the same position that are not joined "
+                               "(the first: {} and {}, at {}): each part's edge there is free, as if the parts were "
+                               "cut apart. Parts are joined only by sharing nodes: one part whose mesh runs through "
+                               "(a 3-D surface from one Gmsh file whose surfaces share their boundary curve), or, if "
+                               "they are meant to be apart (contact), starting them apart",
+                               m.parts[parts.first].name, m.parts[parts.second].name, first.second,
+                               node_label(m, a), node_label(m, b), where)});
+  }
+  return out;
+}
+
+}  // namespace tunica
