@@ -20,15 +20,14 @@
 #include "core/printable.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
+#include "io/deck_meridian_parts.hpp"
 #include "io/deck_names.hpp"
 #include "io/deck_shell_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "io/inverse_step_checks.hpp"
-#include "io/meridian_checks.hpp"
 #include "io/unitless_values.hpp"
 #include "io/yaml_syntax.hpp"
-#include "mesh/meridian.hpp"
 #include "model/axis_pole_check.hpp"
 #include "model/coincident_nodes_check.hpp"
 #include "model/frame_axis_check.hpp"
@@ -77,7 +76,9 @@ const ComponentSpec& part_spec() {
                                 "inverse step use; theory manual (13.12)–(13.14))"),
                            {"reference", "imaged"}),
                     "reference"),
-       required(structured("mesh", "map", "`type:` a generator (see Meshes) or `gmsh`, and its keys")),
+       required(structured("mesh", "map or list",
+                           "`type:` a generator (see Meshes) or `gmsh`, and its keys; axisymmetric parts: also a "
+                           "list of `line` and `arc` pieces joined end to start (see Meshes)")),
        structured("frame", "map", "3-D parts: the material frame rule (see `parts.frame`)"),
        text("enter_step", "name of the step from which the part is assembled, stress free in its deck geometry "
                           "(default: from the start)")}};
@@ -273,44 +274,6 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
   return base;
 }
 
-std::vector<std::string> names(std::initializer_list<const char*> l) { return {l.begin(), l.end()}; }
-
-void read_meridian_part(const DeckNode& node, Part& part, Model& m) {
-  const DeckNode mesh = node.required("mesh");
-  if (!mesh.is_map()) mesh.fail("expected a map with `type: line` or `type: arc`");
-  const std::string type = mesh.required("type").as_string();
-  auto gen = meridian_types().find(type);
-  if (gen == meridian_types().end())
-    mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc)" +
-                      did_you_mean(type, {"line", "arc"}));
-  if (node.has("frame")) node["frame"].fail("an axisymmetric part's frame is fixed (1 = hoop, 2 = meridian)");
-  const Params mp = read_params(mesh, gen->second.spec, m.units, names({"type"}));
-  warn_unitless_values(mesh, gen->second.spec, m);
-  if (m.num_nodes() + mp.integer("elements") + 1 > kMaxNodes)
-    mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
-  const Meridian points = gen->second.make(mp);
-  check_meridian(mesh, gen->second, mp, points, m.units);
-  const int first = m.num_nodes();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    m.X.push_back(Eigen::Vector3d(points[i](0), points[i](1), 0.0));
-    part.nodes.push_back(first + static_cast<int>(i));
-  }
-  ElementBlock block;
-  block.kind = ElementKind::axisym2;
-  for (std::size_t e = 0; e + 1 < points.size(); ++e) {
-    const double L = (points[e + 1] - points[e]).norm();
-    if (!(L > 0)) mesh.fail(fmt::format("element {} has zero length", e));
-    if (points[e](0) == 0 && points[e + 1](0) == 0) mesh.fail(fmt::format("element {} lies on the axis (r = 0)", e));
-    block.nodes.push_back(first + static_cast<int>(e));
-    block.nodes.push_back(first + static_cast<int>(e) + 1);
-  }
-  part.blocks.push_back(std::move(block));
-  const std::string origin = fmt::format("part '{}' (line {}) as one of its generated sets", part.name, node.where().line);
-  m.node_sets.push_back({part.name + ".start", {part.nodes.front()}, origin});
-  m.node_sets.push_back({part.name + ".end", {part.nodes.back()}, origin});
-  m.node_sets.push_back({part.name + ".all", part.nodes, origin});
-}
-
 /// The name of step k (0-based) of the deck's `steps` list, "step" if it has none.
 std::string step_name(const DeckNode& steps, std::size_t k) {
   const std::vector<DeckNode> items = steps.is_sequence() ? steps.items() : std::vector<DeckNode>{};
@@ -399,12 +362,17 @@ void read_parts(const DeckNode& deck, Model& m, const ReadOptions& options) {
       p.fail("element", "axisymmetric and 3-D parts cannot be mixed in one deck (the first part is " +
                             m.parts.front().element + ")");
     first = false;
-    if (solid) read_solid_part(node, p, part, m);
-    else if (g == Geometry::axisymmetric) read_meridian_part(node, part, m);
-    else read_surface_part(node, part, m, cache);
+    std::vector<int> joints;  // where the pieces of a meridian join
+    if (solid) {
+      read_solid_part(node, p, part, m);
+    } else if (g == Geometry::axisymmetric) {
+      joints = read_meridian_part(node, part, m);
+    } else {
+      read_surface_part(node, part, m, cache);
+    }
     if (shell) {
       part.blocks.front().kind = ElementKind::shell2;
-      finish_shell_part(node, p, part, m);
+      finish_shell_part(node, p, part, m, joints);
     }
     m.parts.push_back(std::move(part));
   }
@@ -937,7 +905,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
       node["type"].fail("unknown material type '" + type + "' (known: " + list + ")" + did_you_mean(type, known));
     }
     const ComponentSpec& spec = t != material_types().end() ? t->second.spec : st->second.spec;
-    const Params p = read_params(node, spec, m.units, names({"type"}));
+    const Params p = read_params(node, spec, m.units, {"type"});
     if (t != material_types().end())
       m.materials[name] = t->second.make(p);
     else

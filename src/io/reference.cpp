@@ -5,6 +5,7 @@
 #include "io/deck.hpp"
 #include "quantities/history_quantity.hpp"
 #include "materials/membrane_material.hpp"
+#include "io/deck_meridian_parts.hpp"
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "materials/solid_material.hpp"
@@ -35,6 +36,18 @@ std::string deck_reference_markdown() {
            "`axisymmetric_shell`):\n\n";
       for (const auto& [name, t] : meridian_types())
         s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
+      s += fmt::format(
+          "#### A list of pieces\n\n`mesh:` may also be a list of `line` and `arc` maps, joined end to start into "
+          "one meridian: each piece starts where the one before it ends (within {:g} % of the length of the shorter "
+          "element that meets there), and the node there is one node of the part, so the membrane runs through it. Nodes are "
+          "numbered along the whole meridian from the first piece's first node; `<part>.start` and `<part>.end` "
+          "are the first and last nodes of the whole. A capsule of radius 1 mm and cylinder length 4 mm, pole to "
+          "pole:\n\n```yaml\nmesh:\n  - {{type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, "
+          "end_angle: 0 deg, elements: 10}}\n  - {{type: line, from: [1 mm, 0 mm], to: [1 mm, 4 mm], elements: "
+          "20}}\n  - {{type: arc, center: [0 mm, 4 mm], radius: 1 mm, start_angle: 0 deg, end_angle: 90 deg, "
+          "elements: 10}}\n```\n\nAn `axisymmetric_shell`'s pieces must also meet tangentially (within 0.5 deg): "
+          "its meridian has one slope at each node.\n\n",
+          100 * kMeridianJoinFraction);
       s += "3-D parts (`element: membrane`):\n\n";
       for (const auto& [name, t] : surface_generator_types())
         s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));

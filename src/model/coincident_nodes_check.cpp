@@ -45,10 +45,13 @@ std::vector<CoincidentNodes> coincident_node_warnings(const Model& m) {
                    fmt::format("parts '{}' and '{}' have {} pair(s) of nodes at the same position that are not joined "
                                "(the first: {} and {}, at {}): each part's edge there is free, as if the parts were "
                                "cut apart. Parts are joined only by sharing nodes: one part whose mesh runs through "
-                               "(a 3-D surface from one Gmsh file whose surfaces share their boundary curve), or, if "
-                               "they are meant to be apart (contact), starting them apart",
+                               "({}), or, if they are meant to be apart (contact), starting them apart",
                                m.parts[parts.first].name, m.parts[parts.second].name, first.second,
-                               node_label(m, a), node_label(m, b), where)});
+                               node_label(m, a), node_label(m, b), where,
+                               axisymmetric ? "an axisymmetric part whose `mesh` is a list of `line` and `arc` pieces "
+                                              "joined end to start"
+                                            : "a 3-D surface from one Gmsh file whose surfaces share their boundary "
+                                              "curve")});
   }
   return out;
 }

@@ -1,0 +1,194 @@
+// An axisymmetric meridian made of pieces (`mesh:` a list of `line` and `arc` maps joined end to
+// start, io/deck_meridian_parts.hpp) is one membrane: the node where two pieces meet is shared.
+// - A capsule (arc, line, arc) under pressure: far from the caps its cylinder is the closed-ended
+//   thin tube of the closed form, σθ h = p r and σz h = p r / 2 (the axial force p π r² reaches
+//   the cylinder through the joints), with the neo-Hookean membrane stresses
+//   σα = μ (λα² − 1/(λθ λz)²), h = H/(λθ λz) (theory manual §2).
+// - A sphere of two arcs equals the sphere of one arc, membrane and shell.
+// - Pieces that do not meet, run the wrong way, or (shell) meet at a corner are errors at the
+//   piece's key.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
+
+using namespace tunica;
+using namespace tunica::test;
+
+namespace {
+
+const std::string kScratch = "tunica-meridian-pieces";
+
+const std::string kCapsule = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+parts:
+  capsule:
+    element: axisymmetric_membrane
+    material: rubber
+    thickness: 0.05 mm
+    mesh:
+      - {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, elements: 10}
+      - {type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: 40}
+      - {type: arc, center: [0 mm, 10 mm], radius: 1 mm, start_angle: 0 deg, end_angle: 90 deg, elements: 10}
+node_sets:
+  mid: {part: capsule, nodes: [30]}
+  below: {part: capsule, nodes: [29]}
+  above: {part: capsule, nodes: [31]}
+boundary:
+  south: {node_set: capsule.start, dofs: [r, z]}
+  north: {node_set: capsule.end, dofs: [r]}
+loads:
+  p: {type: pressure, part: capsule}
+steps:
+  - {name: inflate, increments: 5, set: {p: 0.03 MPa}}
+output:
+  vtk: false
+  history:
+    - {quantity: position_r, node_set: mid, name: r_mid}
+    - {quantity: position_z, node_set: below, name: z_below}
+    - {quantity: position_z, node_set: above, name: z_above}
+)";
+
+/// A sphere of radius 1 mm, pole to pole: one arc of 20 elements, or two of 10 (`element` given).
+std::string sphere(const std::string& element, bool two_arcs) {
+  const std::string mesh =
+      two_arcs ? "\n      - {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, "
+                 "elements: 10}\n      - {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: 0 deg, "
+                 "end_angle: 90 deg, elements: 10}"
+               : " {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 90 deg, "
+                 "elements: 20}";
+  const std::string poles = element == "axisymmetric_shell" ? "dofs: [r, slope_z]" : "dofs: [r]";
+  return fmt::format(R"(units: {{length: mm, force: N}}
+materials:
+  rubber: {{type: neo_hookean, mu: 1 MPa}}
+parts:
+  ball:
+    element: {}
+    material: rubber
+    thickness: 0.05 mm
+    mesh:{}
+boundary:
+  south: {{node_set: ball.start, dofs: [r, z]}}
+  north: {{node_set: ball.end, {}}}
+loads:
+  p: {{type: pressure, part: ball}}
+steps:
+  - {{name: inflate, increments: 4, set: {{p: 0.04 MPa}}}}
+output:
+  vtk: false
+)",
+                     element, mesh, poles);
+}
+
+Eigen::VectorXd final_displacement(const std::string& deck) {
+  const Model m = read_deck_text(deck, "sphere.yaml");
+  Capture c;
+  Analysis a(m);
+  a.run(c);
+  return a.displacement();
+}
+
+}  // namespace
+
+TEST(MeridianPieces, ACapsuleCylinderIsTheClosedEndedTubeOfTheClosedForm) {
+  const Model m = read_deck_text(kCapsule, "capsule.yaml");
+  ASSERT_EQ(m.num_nodes(), 61);  // 10 + 40 + 10 elements, the two joints shared
+  Capture c;
+  Analysis a(m);
+  a.run(c);
+  const auto& last = c.rows.back().values;
+  const double r = last[Capture::column(m, "r_mid_mm")];
+  const double lz = (last[Capture::column(m, "z_above_mm")] - last[Capture::column(m, "z_below_mm")]) / 0.5;
+  // The closed form: f(λθ, λz) = 0 by Newton from the FE values' neighbourhood.
+  const double mu = 1, H = 0.05, R = 1, p = 0.03;
+  double t = 1.2, z = 1.05;
+  for (int it = 0; it < 50; ++it) {
+    const auto f = [&](double a, double b) {
+      const double J = 1 / (a * a * b * b), h = H / (a * b);
+      return Eigen::Vector2d(mu * (a * a - J) * h - p * a * R, mu * (b * b - J) * h - p * a * R / 2);
+    };
+    const Eigen::Vector2d f0 = f(t, z);
+    const double e = 1e-7;
+    Eigen::Matrix2d K;
+    K.col(0) = (f(t + e, z) - f(t - e, z)) / (2 * e);
+    K.col(1) = (f(t, z + e) - f(t, z - e)) / (2 * e);
+    const Eigen::Vector2d d = K.partialPivLu().solve(-f0);
+    t += d(0);
+    z += d(1);
+    if (d.norm() < 1e-14) break;
+  }
+  ASSERT_NEAR(t, 1.25234, 1e-4);  // the closed form itself, for the record
+  EXPECT_NEAR(r / R, t, 1e-4 * t) << "hoop stretch at mid-length";
+  EXPECT_NEAR(lz, z, 1e-4 * z) << "axial stretch at mid-length";
+}
+
+TEST(MeridianPieces, ASphereOfTwoArcsIsTheSphereOfOneArc) {
+  for (const std::string element : {"axisymmetric_membrane", "axisymmetric_shell"}) {
+    const Eigen::VectorXd one = final_displacement(sphere(element, false));
+    const Eigen::VectorXd two = final_displacement(sphere(element, true));
+    ASSERT_EQ(one.size(), two.size()) << element;
+    ASSERT_GT(one.cwiseAbs().maxCoeff(), 0.1) << element;
+    EXPECT_LT((one - two).cwiseAbs().maxCoeff(), 1e-10 * one.cwiseAbs().maxCoeff()) << element;
+  }
+}
+
+TEST(MeridianPieces, ThePiecesCountAsOnePartInCheck) {
+  const Outcome o = run_cli("check " + write_deck_file(kScratch, "capsule", kCapsule));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("61 node(s), 60 element(s)"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("not joined"), std::string::npos) << o.output;
+}
+
+TEST(MeridianPieces, APieceThatDoesNotStartWhereTheLastEndedNamesTheGapAndTheStart) {
+  expect_check_error(kScratch, "gap", replace(kCapsule, "from: [1 mm, 0 mm]", "from: [1.1 mm, 0 mm]"),
+                     "from: [1.1 mm, 0 mm]", "parts.capsule.mesh[1].from",
+                     "this piece starts at [1.1, 0] mm but the piece before it (mesh[0]) ends at [1, 0] mm, 0.1 mm "
+                     "apart: the pieces of a meridian join end to start, in node order (start it at [1, 0] mm)");
+}
+
+TEST(MeridianPieces, APieceThatRunsTheOtherWayIsToldToSwapItsEnds) {
+  expect_check_error(kScratch, "reversed",
+                     replace(kCapsule, "from: [1 mm, 0 mm], to: [1 mm, 10 mm]", "from: [1 mm, 10 mm], to: [1 mm, 0 mm]"),
+                     "from: [1 mm, 10 mm]", "parts.capsule.mesh[1].from",
+                     "this piece ends there, so it runs the other way: swap `from` and `to`");
+}
+
+TEST(MeridianPieces, AnEmptyListOrAnItemThatIsNotAMapIsRefused) {
+  const std::string pieces = kCapsule.substr(kCapsule.find("      - {type: arc"),
+                                             kCapsule.find("node_sets:") - kCapsule.find("      - {type: arc"));
+  expect_check_error(kScratch, "empty", replace(replace(kCapsule, pieces, ""), "    mesh:\n", "    mesh: []\n"),
+                     "mesh: []", "parts.capsule.mesh", "an empty list: expected a map with `type: line`");
+  expect_check_error(kScratch, "scalar-item", replace(kCapsule, "      - {type: line", "      - 3\n      - {type: line"),
+                     "      - 3", "parts.capsule.mesh[1]", "expected a map with `type: line` or `type: arc`");
+}
+
+TEST(MeridianPieces, AShellsPiecesThatMeetAtACornerAreRefused) {
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+parts:
+  cone:
+    element: axisymmetric_shell
+    material: rubber
+    thickness: 0.05 mm
+    mesh:
+      - {type: line, from: [1 mm, 0 mm], to: [1 mm, 2 mm], elements: 4}
+      - {type: line, from: [1 mm, 2 mm], to: [0.5 mm, 3 mm], elements: 4}
+boundary:
+  a: {node_set: cone.start, dofs: [r, z]}
+steps:
+  - {name: s, increments: 1, set: {}}
+)";
+  expect_check_error(kScratch, "corner", deck, "      - {type: line, from: [1 mm, 2 mm]", "parts.cone.mesh[1]",
+                     "the meridian turns by 26.6 deg at node 4, where mesh[0] and mesh[1] join");
+  // The same corner is a membrane's to carry.
+  const Outcome o = run_cli("check " + write_deck_file(kScratch, "corner-membrane",
+                                                       replace(deck, "axisymmetric_shell", "axisymmetric_membrane")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}
