@@ -8,10 +8,18 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "materials/membrane_material.hpp"
 #include "model/meridian_curvature.hpp"
 #include "model/surface_curvature.hpp"
 
 namespace tunica {
+
+namespace {
+
+/// c of the slack step's tension T̄ = c μ₀ H, theory manual (7.14).
+constexpr double kSlackTension = 0.1;
+
+}  // namespace
 
 System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) {
   const int n = model.num_dofs();
@@ -72,6 +80,7 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
   }
   blocks_.resize(model.parts.size());
   extent_.assign(model.parts.size(), 0.0);
+  slack_tension_.assign(model.parts.size(), 0.0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const Part& part = model.parts[p];
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
@@ -81,6 +90,12 @@ System::System(const Model& model) : model_(model), dpn_(model.dofs_per_node()) 
         hi = hi.cwiseMax(model.X[node]);
       }
     if (hi(0) >= lo(0)) extent_[p] = (hi - lo).norm();
+    if (part.material && part.thickness > 0) {
+      // μ₀ from the tangent at rest: an incompressible membrane's dS11/dE11 = dS22/dE22 = 4μ there.
+      const MembraneResponse rest = membrane_response(*part.material, Eigen::Vector3d(1, 1, 0));
+      const double mu0 = (rest.D(0, 0) + rest.D(1, 1)) / 8;
+      if (std::isfinite(mu0) && mu0 > 0) slack_tension_[p] = kSlackTension * mu0 * part.thickness;
+    }
     std::vector<std::vector<double>> curvature = element_mean_curvature(model, part);
     std::vector<std::vector<double>> meridian = meridian_mean_curvature(model, part);
     for (std::size_t b = 0; b < curvature.size(); ++b)
@@ -265,7 +280,21 @@ Eigen::VectorXd System::add_start_stiffness(const LoadState& loads, const Eigen:
     // The inverse problem's ∂R/∂X is about −∂R/∂x near the stress-free state (R depends on x − X to
     // first order): its start stiffness is −K₀, (13.8).
     const double T = inverse(loads) ? -std::abs(pressure[p]) : std::abs(pressure[p]);
-    for (const auto& block : blocks_[p]) block->start_stiffness(T, cap, d, Kd, K);
+    StartTension t;
+    t.abs_pressure = T;
+    t.cap = cap;
+    for (const auto& block : blocks_[p]) block->start_stiffness(t, d, Kd, K);
+  }
+  return Kd;
+}
+
+Eigen::VectorXd System::add_slack_stiffness(double theta, int step, const Eigen::VectorXd& d, TangentMatrix& K) const {
+  Eigen::VectorXd Kd = Eigen::VectorXd::Zero(num_dofs());
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    if (slack_tension_[p] == 0.0 || !model_.part_active(static_cast<int>(p), step)) continue;
+    StartTension t;
+    t.uniform = theta * slack_tension_[p];
+    for (const auto& block : blocks_[p]) block->start_stiffness(t, d, Kd, K);
   }
   return Kd;
 }

@@ -93,6 +93,11 @@ public:
   /// diagonal of the part's bounding box, which caps T₀ on flat regions), and returns K₀ d
   /// (all DOFs; d over all DOFs, or empty for none).
   Eigen::VectorXd add_start_stiffness(const LoadState& loads, const Eigen::VectorXd& d, TangentMatrix& K) const;
+  /// The metric of a step without pressure (theory manual §7.3, (7.14); solver/tangent_hooks.hpp):
+  /// adds to K the normal-tension stiffness K₀ of (7.7) at the uniform tension θ T̄ on every membrane
+  /// element of an active part, T̄ = c μ₀ H (c = 0.1, system.cpp) (μ₀ the material's shear modulus at rest,
+  /// H the part's thickness), and returns K₀ d (all DOFs; d over all DOFs, or empty for none).
+  Eigen::VectorXd add_slack_stiffness(double theta, int step, const Eigen::VectorXd& d, TangentMatrix& K) const;
   /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
   /// pair's node order; inactive while the pair waits for one of its parts to enter.
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;
@@ -144,6 +149,7 @@ private:
   std::shared_ptr<const TangentLayout> layout_;
   std::vector<std::vector<std::unique_ptr<BlockContribution>>> blocks_;  ///< per part, per block
   std::vector<double> extent_;              ///< per part: the diagonal of its reference bounding box
+  std::vector<double> slack_tension_;       ///< per part: T̄ of (7.14), 0 for parts without a membrane material
   /// Per DOF: the step from which it is free to move (the lowest enter_step of the parts using its node; 0 if none).
   std::vector<int> dof_enter_;
   /// Free DOFs that may be held: DOF, code of K_ii (TangentLayout::entry), k_i.

@@ -229,12 +229,11 @@ public:
     }
   }
 
-  void start_stiffness(double abs_pressure, double cap, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
+  void start_stiffness(const StartTension& t, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
                        TangentMatrix& K) const override {
     if constexpr (Kernel::kStartStiffness) {
       for_each_coloured(layout_, [&](int e) {
-        // T₀ = |p| / max(|H_e|, cap), theory manual (7.7).
-        const double T0 = abs_pressure / std::max(std::abs(curvature_[e]), cap);
+        const double T0 = t.at(curvature_[e]);  // theory manual (7.8) or (7.14)
         Matrix Ke;
         kernel_.start(e, T0, Ke);
         const int* en = block_.element(e);

@@ -16,7 +16,7 @@ std::map<ElementKind, ElementType>& registry() {
 
 }  // namespace
 
-void BlockContribution::start_stiffness(double, double, const Eigen::VectorXd&, Eigen::VectorXd&, TangentMatrix&) const {}
+void BlockContribution::start_stiffness(const StartTension&, const Eigen::VectorXd&, Eigen::VectorXd&, TangentMatrix&) const {}
 void BlockContribution::assemble_inverse(const Eigen::VectorXd&, double, Eigen::VectorXd&, TangentMatrix*,
                                          double&) const {
   throw std::logic_error("this element type has no inverse element (ElementType::inverse)");

@@ -11,6 +11,8 @@
 // Element types register themselves by kind and name (register_element_type), as
 // materials do; a kind is implemented by a kernel (contributions/element_loop.hpp)
 // in one file of this folder.
+#include <algorithm>
+#include <cmath>
 #include <Eigen/Dense>
 #include <cstdint>
 #include <functional>
@@ -49,6 +51,19 @@ struct BlockContext {
   std::vector<double> curvature;  ///< membranes: per element, the mean curvature H_e (model/surface_curvature.hpp, meridian_curvature.hpp)
 };
 
+/// The tension T₀,e of the normal-tension stiffness K₀ (theory manual (7.7)) on an element of mean
+/// curvature H_e: Laplace's estimate |p| / max(|H_e|, cap) (7.8) for a pressure (−|p| gives −K₀,
+/// the inverse problem's (13.8)), or, when `uniform` is not 0, that tension on every element (the
+/// slack step's metric, (7.14)).
+struct StartTension {
+  double abs_pressure = 0;
+  double cap = 0;
+  double uniform = 0;
+  double at(double mean_curvature) const {
+    return uniform != 0 ? uniform : abs_pressure / std::max(std::abs(mean_curvature), cap);
+  }
+};
+
 /// The contributions of one block of elements to R, K and the outputs. Element DOFs are
 /// node-major: unknown a of an element is unknown a % d of its node a / d (d unknowns per node).
 class BlockContribution {
@@ -77,10 +92,9 @@ public:
   virtual void add_volume(const Eigen::VectorXd& u, const VolumeMeasure& how, double& V, Eigen::VectorXd* grad) const = 0;
   /// diag += the diagonal of the tangent at the reference state u = 0 (all DOFs).
   virtual void reference_diagonal(Eigen::VectorXd& diag) const = 0;
-  /// The stress-free start's normal-tension stiffness (theory manual (7.6)–(7.8)) for pressure |p|
-  /// and curvature floor `cap`: K += K₀ and Kd += K₀ d (d all DOFs, or empty); −|p| gives −K₀, the
-  /// inverse problem's (13.8). None by default.
-  virtual void start_stiffness(double abs_pressure, double cap, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
+  /// The normal-tension stiffness K₀ (theory manual (7.6)–(7.7)) at the tension `t` gives each
+  /// element: K += K₀ and Kd += K₀ d (d all DOFs, or empty). None by default.
+  virtual void start_stiffness(const StartTension& t, const Eigen::VectorXd& d, Eigen::VectorXd& Kd,
                                TangentMatrix& K) const;
   /// Appends the Gauss-point states of every element (membranes and shells; none for solids).
   virtual void membrane_points(const Eigen::VectorXd& u, std::vector<MembranePoint>& out) const;

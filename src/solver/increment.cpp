@@ -9,6 +9,19 @@
 
 namespace tunica {
 
+namespace {
+
+/// A step of a 3-D model with no pressure on any membrane: the increment ends with every pressure
+/// at 0 (theory manual §7.3).
+bool slack_step(const System& system, const LoadState& loads) {
+  if (system.model().dofs_per_node() != 3) return false;
+  for (double p : loads.pressure)
+    if (p != 0) return false;
+  return true;
+}
+
+}  // namespace
+
 NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadState& loads, Eigen::VectorXd& u,
                              const SolverSettings& settings,
                              const std::function<void(const IterationRecord&)>& on_iteration,
@@ -31,13 +44,19 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
     return newton(bordered, solver, settings, on_iteration, start ? &*start : nullptr);
   }
   const StartStiffness* stiffness = nullptr;
-  std::unique_ptr<StartStiffness> inverse_k0;
+  std::unique_ptr<StartStiffness> inverse_k0;  // the metric of a regularized tangent
   if (inverse) {
     // The inverse tangent is regularized at every iteration (13.11), the first included, also the
     // predictor's: the plain one moves the reference along its isometric modes.
     inverse_k0 = std::make_unique<StartStiffness>(system, loads);
     stiffness = inverse_k0.get();
-    equilibrium.add_hook(std::make_unique<InverseRegularization>(
+    equilibrium.add_hook(std::make_unique<ScaledRegularization>(
+        *inverse_k0, [&equilibrium] { return equilibrium.last_residual_norm(); }));
+  } else if (slack_step(system, loads)) {
+    // No pressure acts: a 3-D wall without hoop tension ovalizes freely, (7.14).
+    inverse_k0 = std::make_unique<StartStiffness>(system, loads, true);
+    stiffness = inverse_k0.get();
+    equilibrium.add_hook(std::make_unique<ScaledRegularization>(
         *inverse_k0, [&equilibrium] { return equilibrium.last_residual_norm(); }));
   } else if (settings.stiffen_stress_free_start && stress_free) {
     auto hook = std::make_unique<StartStiffness>(system, loads);
