@@ -197,6 +197,34 @@ output: {{vtk: false}}
 """
 
 
+def tube_stretch_alone(mat, around, along, shape):
+    """A closed tube stretched to λz = 1.2 with no pressure (a step without pressure, theory manual
+    §7.3), then inflated: the seventh to tenth docs-only trials' decks."""
+    m, p, h, r = MATERIALS[mat]
+    return f"""title: campaign closed tube, {mat}, {around}x{along} {shape}, stretch alone then inflation
+units: {{length: mm, force: N}}
+materials:
+  wall: {m}
+parts:
+  vessel:
+    element: membrane
+    material: wall
+    thickness: {h}
+    mesh: {{type: tube, radius: {r}, length: 10 mm, around: {around}, along: {along}, shape: {shape}}}
+{FRAME}boundary:
+  sym_x: {{node_set: vessel.x0, dofs: [x]}}
+  sym_y: {{node_set: vessel.y0, dofs: [y]}}
+  base: {{node_set: vessel.bottom, dofs: [z]}}
+  stretch: {{node_set: vessel.top, dofs: [z]}}
+loads:
+  blood: {{type: pressure, part: vessel, volume_axis: [0, 0, 1]}}
+steps:
+  - {{name: prestretch, increments: 4, set: {{stretch: 2 mm}}}}
+  - {{name: inflation, increments: 10, set: {{blood: {p}}}}}
+output: {{vtk: false}}
+"""
+
+
 def decks():
     out = {}
     for mat in MATERIALS:
@@ -223,6 +251,10 @@ def decks():
     out["sac-mooney_rivlin-axisym-whole-1000-volume-10inc"] = sac_axisym(1000, True)
     out["sac-mooney_rivlin-axisym-half-500-volume-10inc"] = sac_axisym(500, False)
     out["quarter-tube-hgo-tri-50x200-stretch-10mmHg"] = hgo_quarter_tube(50, 200)
+    # Closed tubes stretched with no pressure, then inflated.
+    out["closed-tube-hgo-quad-128x40-stretch-alone"] = tube_stretch_alone("hgo", 128, 40, "quad")
+    out["closed-tube-fung-tri-48x12-stretch-alone"] = tube_stretch_alone("fung", 48, 12, "triangle")
+    out["closed-tube-neo_hookean-tri-64x16-stretch-alone"] = tube_stretch_alone("neo_hookean", 64, 16, "staggered_triangle")
     # The shipped examples as they are, and the angioplasty balloon made softer.
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "..", "examples")

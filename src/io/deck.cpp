@@ -30,6 +30,7 @@
 #include "io/yaml_syntax.hpp"
 #include "model/axis_pole_check.hpp"
 #include "model/coincident_nodes_check.hpp"
+#include "model/edge_frame_check.hpp"
 #include "model/frame_axis_check.hpp"
 #include "model/wall_thickness_check.hpp"
 #include "model/symmetry_plane_check.hpp"
@@ -272,6 +273,55 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
     set_solver_setting(base, key, p);
   }
   return base;
+}
+
+/// A reaction of a node set none of whose nodes has that DOF prescribed is 0 at every increment
+/// (reactions are R on prescribed DOFs, theory manual §4): an error naming what the set's nodes hold.
+void check_reaction_held(const Params& h, const HistoryRequest& r, const Model& m) {
+  const std::vector<std::string> dofs = m.dof_names();
+  const std::string component = r.quantity.substr(std::string("reaction_").size());
+  const auto at = std::find(dofs.begin(), dofs.end(), component);
+  if (at == dofs.end()) return;
+  const int c = static_cast<int>(at - dofs.begin());
+  const std::vector<int>& nodes = m.node_sets[static_cast<std::size_t>(r.node_set)].nodes;
+  const std::set<int> in_set(nodes.begin(), nodes.end());
+  std::set<int> held;  // DOF components held at some node of the set
+  std::string by;  // the boundaries on the set
+  for (const Boundary& b : m.boundaries) {
+    const std::vector<int>& bn = m.node_sets[static_cast<std::size_t>(b.node_set)].nodes;
+    if (std::none_of(bn.begin(), bn.end(), [&](int n) { return in_set.count(n) > 0; })) continue;
+    for (int d : b.dofs) held.insert(d);
+    by += (by.empty() ? "" : ", ") + b.name;
+  }
+  if (held.count(c)) return;
+  std::string list;
+  for (int d : held) list += (list.empty() ? "" : ", ") + dofs[static_cast<std::size_t>(d)];
+  h.fail("node_set",
+         fmt::format("'{}' is the reaction on prescribed {} DOFs, and no boundary holds {} at any node of '{}' ({}): "
+                     "the column would be 0 throughout. Name a set whose {} is held, or hold it with a boundary "
+                     "(`{{node_set: {}, dofs: [{}]}}`)",
+                     r.quantity, component, component, h.text("node_set"),
+                     held.empty() ? std::string("no boundary holds any of its nodes")
+                                  : fmt::format("the boundaries on it, {}, hold {}", by, list),
+                     component, h.text("node_set"), component));
+}
+
+/// A directional quantity (lambda_1, S_2, ...) of a 3-D part without `frame` whose elements' first
+/// edges turn between neighbours (model/edge_frame_check.hpp) is warned about at its history entry.
+void warn_edge_frame_quantity(const DeckNode& node, const HistoryRequest& r, Model& m) {
+  static const std::set<std::string> directional = {"lambda_1", "lambda_2", "E_1", "E_2", "E_12",
+                                                    "S_1", "S_2", "S_12", "sigma_1", "sigma_2"};
+  if (m.geometry != Geometry::three_d || !directional.count(r.quantity)) return;
+  const double turned = edge_frame_turned_fraction(m, r.part);
+  if (!(turned > 0.05)) return;
+  m.warnings.push_back(format_location(
+      node.where(),
+      fmt::format("'{}' is taken along the material directions of part '{}', which has no `frame`: its direction 1 follows each "
+                  "element's first edge, and on this mesh it turns by more than {:g} deg between {:.0f} % of the "
+                  "neighbouring elements, so the values mix directions (a mean of lambda_1 is neither the hoop nor "
+                  "the axial stretch). Give the part a frame (a vessel along z: `frame: {{type: cylindrical, axis: "
+                  "[0, 0, 1]}}`), or record quantities that need none (sigma_max, sigma_min, lambda_3, thickness)",
+                  r.quantity, m.parts[static_cast<std::size_t>(r.part)].name, kEdgeFrameTurnDeg, 100 * turned)));
 }
 
 /// The name of step k (0-based) of the deck's `steps` list, "step" if it has none.
@@ -786,6 +836,7 @@ void read_output(const DeckNode& deck, Model& m) {
       }
     } else if (q->target == QuantityTarget::node_set) {
       r.node_set = node_set_ref(h, "node_set", m);
+      if (r.quantity.rfind("reaction_", 0) == 0) check_reaction_held(h, r, m);
       if (q->shells_only)
         for (int n : m.node_sets[r.node_set].nodes)
           if (!m.has_slopes(n))
@@ -810,6 +861,7 @@ void read_output(const DeckNode& deck, Model& m) {
       }
       r.contact = static_cast<int>(it - m.contacts.begin());
     }
+    if (q->target == QuantityTarget::part) warn_edge_frame_quantity(node, r, m);
     r.reduce = q->reduce;
     // A value of the whole target (a load's pressure, a part's compressed fraction) has nothing to combine.
     const bool reducible = q->membrane || q->solid || q->contact || q->target == QuantityTarget::node_set;

@@ -9,7 +9,9 @@
 #include "assembly/pressure_load_checks.hpp"
 #include "elements/membrane_compression.hpp"
 #include "materials/membrane_material.hpp"
+#include "model/meridian_curvature.hpp"
 #include "model/rigid_motion_check.hpp"
+#include "model/surface_curvature.hpp"
 
 namespace tunica {
 
@@ -62,6 +64,48 @@ std::string held_singular_hint(const Model& model, const Step& step, const StepT
       "the load against the pressure the structure can carry; to follow the structure up to its limit take smaller "
       "increments (`increments`){}.{}",
       tried, control, contact);
+}
+
+/// A load at least this many times the pressure scale of its part's wall is named as the likely cause.
+constexpr double kLoadScaleFactor = 100;
+
+/// A load the step raises far beyond the pressure scale 2 μ₀ H |H_m| of its part's wall (μ₀H/R for a
+/// tube, 2μ₀H/R for a sphere; μ₀ the material's shear modulus at rest, H the thickness, |H_m| the
+/// median of the elements' mean curvature): a value or a unit mistyped. "" if none.
+std::string load_scale_hint(const Model& model, const Step& step) {
+  for (const PressureLoad& load : model.loads) {
+    const auto target = step.targets.find(load.name);
+    if (target == step.targets.end() || load.part < 0 || load.part >= static_cast<int>(model.parts.size())) continue;
+    const Part& part = model.parts[static_cast<std::size_t>(load.part)];
+    if (!part.material || !(part.thickness > 0)) continue;
+    const MembraneResponse rest = membrane_response(*part.material, Eigen::Vector3d(1, 1, 0));
+    const double mu0 = (rest.D(0, 0) + rest.D(1, 1)) / 8;
+    if (!(mu0 > 0) || !std::isfinite(mu0)) continue;
+    std::vector<double> curvature;
+    const auto blocks = model.dofs_per_node() == 3 ? element_mean_curvature(model, part)
+                                                   : meridian_mean_curvature(model, part);
+    for (const auto& block : blocks)
+      for (double h : block)
+        if (std::isfinite(h)) curvature.push_back(std::abs(h));
+    if (curvature.empty()) continue;
+    std::nth_element(curvature.begin(), curvature.begin() + curvature.size() / 2, curvature.end());
+    const double hm = curvature[curvature.size() / 2];
+    const double scale = 2 * mu0 * part.thickness * hm, p = std::abs(target->second);
+    if (!(hm > 0) || !(p > kLoadScaleFactor * scale)) continue;
+    const auto kpa = [&](double x) { return model.units.from_internal(x, "kPa", Dimension::pressure); };
+    const std::string len = model.units.display_unit(Dimension::length);
+    return fmt::format(
+        "load '{}' is raised to {:.4g} kPa ({:.4g} mmHg), {:.3g} times the pressure scale of part '{}', 2μ₀H|H_m| = "
+        "{:.4g} kPa (μ₀ = {:.4g} kPa, its material's shear modulus at rest; H = {:.4g} {}, its thickness; |H_m| = "
+        "{:.4g}/{}, the median mean curvature of its elements, 1/R on a sphere and 1/(2R) on a tube, so that the "
+        "scale is 2μ₀H/R and μ₀H/R): a wall of this material carries such a pressure only at an extreme stretch, if "
+        "at all. Check the value and its unit (1 kPa = 7.5 mmHg, 1 MPa "
+        "= 1000 kPa); more iterations or smaller increments will not carry it.",
+        load.name, kpa(p), model.units.from_internal(p, "mmHg", Dimension::pressure), p / scale, part.name, kpa(scale),
+        kpa(mu0), model.units.from_internal(part.thickness, len, Dimension::length), len,
+        1 / model.units.from_internal(1 / hm, len, Dimension::length), len);
+  }
+  return "";
 }
 
 }  // namespace
@@ -241,6 +285,8 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
     return hints;
   }
   if (!limit.empty()) return limit;
+  // No limit point on the way, and a load far beyond what the wall carries: a value or unit mistyped.
+  if (std::string h = load_scale_hint(model, step); !h.empty()) return " Hint: " + h;
   if (still_converging) add(more_iterations);
   else hints += rising;
   // No other evidence, and no increment converged from the stress-free reference (the first step):

@@ -544,3 +544,16 @@ TEST(BadInput, AMeridianMeshOnA3DPartNamesTheAxisymmetricElement) {
                "meridian: for an axisymmetric part write `element: axisymmetric_membrane`",
                "    mesh: {type: line,");
 }
+
+TEST(BadInput, AReactionOnADofNothingHoldsNamesWhatTheSetHolds) {
+  // wall.end holds z only (boundary `stretch`): its r reaction would be 0 throughout.
+  expect_error("reaction-free", "{quantity: reaction_z, node_set: wall.end,", "{quantity: reaction_r, node_set: wall.end,",
+               "output.history[8].node_set",
+               "'reaction_r' is the reaction on prescribed r DOFs, and no boundary holds r at any node of 'wall.end' "
+               "(the boundaries on it, stretch, hold z)");
+  // A set some of whose nodes hold the DOF is fine: the sum over them.
+  const Outcome o = run_cli("check " + write_deck("reaction-some-held",
+                                                  replace(read_text(kExample), "{quantity: reaction_z, node_set: wall.end,",
+                                                          "{quantity: reaction_z, node_set: wall.all,")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}

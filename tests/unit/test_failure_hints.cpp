@@ -480,3 +480,33 @@ steps:
       failure_hints(m, m.steps[1], failed("the residual is not finite", 1), none, trying(0.001));
   EXPECT_EQ(inflating.find("no pressure on it"), std::string::npos) << inflating;
 }
+
+TEST(FailureHints, ALoadFarBeyondTheWallsPressureScaleIsNamed) {
+  // A neo-Hookean tube, μ₀ = 30 kPa, H = 0.3 mm, R = 2 mm: μ₀H/R = 4.5 kPa. 80 MPa is 17800 times that.
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  artery: {type: neo_hookean, mu: 30 kPa}
+parts:
+  wall: {element: membrane, material: artery, thickness: 0.3 mm, mesh: {type: tube, radius: 2 mm, length: 4 mm, around: 16, along: 2}}
+boundary:
+  sym_x: {node_set: wall.x0, dofs: [x]}
+  sym_y: {node_set: wall.y0, dofs: [y]}
+  base: {node_set: wall.bottom, dofs: [z]}
+loads:
+  blood: {type: pressure, part: wall}
+steps:
+  - {name: inflate, increments: 4, set: {blood: 80 MPa}}
+)";
+  const Model m = read_deck_text(deck, "tube.yaml");
+  const StepTrace start = along({{0.0, 1.0}});
+  const std::string h = failure_hints(m, m.steps[0], failed("diverging", 1e9), start, trying(20));
+  EXPECT_NE(h.find("load 'blood' is raised to 8e+04 kPa"), std::string::npos) << h;
+  // The facets' curvature of a coarse tube is within 20 % of 1/(2R): the scale 4.5 kPa within as much.
+  EXPECT_NE(h.find("times the pressure scale of part 'wall', 2μ₀H|H_m| = 5.268 kPa"), std::string::npos) << h;
+  EXPECT_NE(h.find("μ₀ = 30 kPa"), std::string::npos) << h;
+  EXPECT_NE(h.find("Check the value and its unit"), std::string::npos) << h;
+  // 120 mmHg, 3.6 times the scale, is no such load.
+  const Model fine = read_deck_text(replace_first(deck, "80 MPa", "120 mmHg"), "tube.yaml");
+  EXPECT_EQ(failure_hints(fine, fine.steps[0], failed("diverging", 1e9), start, trying(0.01)).find("pressure scale"),
+            std::string::npos);
+}
