@@ -275,9 +275,34 @@ SolverSettings read_solver(const DeckNode& node, const UnitSystem& u, SolverSett
   return base;
 }
 
+/// Two steps of one name (progress, messages and restart files name steps), and a material that no
+/// part uses (a part meant to use it names another): warnings at the second name and at the material.
+void warn_names_used_twice_or_never(const DeckNode& deck, Model& m) {
+  std::map<std::string, int> seen;  // a step name given in the deck → the line it is given on
+  for (const DeckNode& step : deck["steps"].items()) {
+    if (!step.is_map() || !step.has("name")) continue;
+    const DeckNode name = step["name"];
+    const auto [it, fresh] = seen.try_emplace(name.as_string(), name.where().line);
+    if (!fresh)
+      m.warnings.push_back(format_location(
+          name.where(), fmt::format("step name '{}' is also the name of the step on line {}: progress, messages and "
+                                    "restart files name steps, so give each its own name",
+                                    it->first, it->second)));
+  }
+  for (const auto& [name, node] : deck["materials"].entries()) {
+    if (std::any_of(m.parts.begin(), m.parts.end(), [&](const Part& p) { return p.material_name == name; })) continue;
+    std::string used;
+    for (const Part& p : m.parts) used += fmt::format("{}'{}' uses '{}'", used.empty() ? "" : ", ", p.name, p.material_name);
+    m.warnings.push_back(format_location(
+        node.where(), fmt::format("material '{}' is used by no part ({}): if a part is meant to be of it, name it in "
+                                  "that part's `material`",
+                                  name, used)));
+  }
+}
+
 /// A reaction of a node set none of whose nodes has that DOF prescribed is 0 at every increment
-/// (reactions are R on prescribed DOFs, theory manual §4): an error naming what the set's nodes hold.
-void check_reaction_held(const Params& h, const HistoryRequest& r, const Model& m) {
+/// (reactions are R on prescribed DOFs, theory manual §4): a warning naming what the set's nodes hold.
+void check_reaction_held(const Params& h, const HistoryRequest& r, Model& m) {
   const std::vector<std::string> dofs = m.dof_names();
   const std::string component = r.quantity.substr(std::string("reaction_").size());
   const auto at = std::find(dofs.begin(), dofs.end(), component);
@@ -296,14 +321,15 @@ void check_reaction_held(const Params& h, const HistoryRequest& r, const Model& 
   if (held.count(c)) return;
   std::string list;
   for (int d : held) list += (list.empty() ? "" : ", ") + dofs[static_cast<std::size_t>(d)];
-  h.fail("node_set",
+  m.warnings.push_back(format_location(
+      h.where("node_set"),
          fmt::format("'{}' is the reaction on prescribed {} DOFs, and no boundary holds {} at any node of '{}' ({}): "
                      "the column would be 0 throughout. Name a set whose {} is held, or hold it with a boundary "
                      "(`{{node_set: {}, dofs: [{}]}}`)",
                      r.quantity, component, component, h.text("node_set"),
                      held.empty() ? std::string("no boundary holds any of its nodes")
                                   : fmt::format("the boundaries on it, {}, hold {}", by, list),
-                     component, h.text("node_set"), component));
+                     component, h.text("node_set"), component)));
 }
 
 /// A directional quantity (lambda_1, S_2, ...) of a 3-D part without `frame` whose elements' first
@@ -981,6 +1007,7 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
             "inverse step: its geometry is the reference, so give the reference thickness H as `thickness` (without "
             "`thickness_at`), or add a step of `type: inverse` first");
   read_output(deck, m);
+  warn_names_used_twice_or_never(deck, m);
   // A body free to move is said at `boundary`, where the fix goes; without that section, at the
   // first step the body takes part in, where its tangent is singular.
   for (const UnheldBody& w : unheld_rigid_motions(m)) {

@@ -36,6 +36,17 @@ Meridian read_piece(const DeckNode& mesh, Model& m, long& elements) {
     mp.fail("elements", fmt::format("the model would have more than {} nodes", kMaxNodes));
   Meridian points = gen->second.make(mp);
   check_meridian(mesh, gen->second, mp, points, m.units);
+  const std::string unit = m.units.display_unit(Dimension::length);
+  if (type == "line" && points.front() == points.back())
+    mesh["to"].fail(fmt::format("`to` is `from`, [{:g}, {:g}] {}: the line has no length; give its other end (a tube "
+                                "of length L at radius R: `from: [R, 0 mm], to: [R, L]`)",
+                                points.front()(0), points.front()(1), unit));
+  if (type == "line" && points.front()(0) == 0 && points.back()(0) == 0)
+    mesh["from"].fail("the line lies on the axis (r = 0 at both ends), where a surface of revolution has no area: "
+                      "points are [r, z], the radius first (a tube of radius R along z: `from: [R, 0 mm], to: [R, L]`)");
+  if (type == "arc" && mp.number("start_angle") == mp.number("end_angle"))
+    mesh["end_angle"].fail("the arc spans 0 deg (`end_angle` is `start_angle`): give the angle where it ends (a "
+                           "sphere from pole to pole: `start_angle: -90 deg, end_angle: 90 deg`)");
   return points;
 }
 

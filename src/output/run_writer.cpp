@@ -47,6 +47,7 @@ const FileRecord* find_record(const RestartRecord& r, const std::string& name) {
 RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume)
     : model_(model), dir_(std::move(directory)), progress_(progress) {
   std::error_code ec;
+  const bool had_vtk = std::filesystem::exists(dir_ + "/vtk", ec);
   std::filesystem::create_directories(model.output.vtk ? dir_ + "/vtk" : dir_, ec);  // vtk/ only for frames
   if (ec) throw std::runtime_error("cannot create the output directory '" + dir_ + "': " + ec.message());
   history_header_ = "step,increment,time";
@@ -59,10 +60,12 @@ RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progr
     return;
   }
   const int removed = remove_earlier_run(dir_);
-  if (const std::string other = foreign_file(dir_); !other.empty())
+  if (const std::string other = foreign_file(dir_); !other.empty()) {
+    if (!had_vtk) std::filesystem::remove(dir_ + "/vtk", ec);  // the run leaves the folder as it found it
     throw std::runtime_error("'" + other + "' is not a file Tunica wrote (it does not start as Tunica's file of that "
                              "name does), and this run would write over it: move it away, or write the run into "
                              "another folder (-o)");
+  }
   if (removed > 0 && progress_)
     std::fprintf(progress_, "removed the %d file(s) of an earlier Tunica run in %s\n", removed, dir_.c_str());
   history_.create(dir_, "history.csv", history_header_);

@@ -3,6 +3,7 @@
 // the real `tunica check` (or `tunica run`) on a broken copy of the example deck.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <fmt/format.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -545,15 +546,60 @@ TEST(BadInput, AMeridianMeshOnA3DPartNamesTheAxisymmetricElement) {
                "    mesh: {type: line,");
 }
 
-TEST(BadInput, AReactionOnADofNothingHoldsNamesWhatTheSetHolds) {
+TEST(BadInput, AReactionOnADofNothingHoldsIsWarnedAboutWithWhatTheSetHolds) {
   // wall.end holds z only (boundary `stretch`): its r reaction would be 0 throughout.
-  expect_error("reaction-free", "{quantity: reaction_z, node_set: wall.end,", "{quantity: reaction_r, node_set: wall.end,",
-               "output.history[8].node_set",
-               "'reaction_r' is the reaction on prescribed r DOFs, and no boundary holds r at any node of 'wall.end' "
-               "(the boundaries on it, stretch, hold z)");
-  // A set some of whose nodes hold the DOF is fine: the sum over them.
-  const Outcome o = run_cli("check " + write_deck("reaction-some-held",
-                                                  replace(read_text(kExample), "{quantity: reaction_z, node_set: wall.end,",
-                                                          "{quantity: reaction_z, node_set: wall.all,")));
+  const std::string text = replace(read_text(kExample), "{quantity: reaction_z, node_set: wall.end,",
+                                   "{quantity: reaction_r, node_set: wall.end,");
+  const std::string path = write_deck("reaction-free", text);
+  const Outcome o = run_cli("check " + path);
   EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find(fmt::format("warning: {}:{}:", path, line_of(text, "{quantity: reaction_r"))), std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("key 'output.history[8].node_set': 'reaction_r' is the reaction on prescribed r DOFs, and no "
+                          "boundary holds r at any node of 'wall.end' (the boundaries on it, stretch, hold z)"),
+            std::string::npos)
+      << o.output;
+  // A set some of whose nodes hold the DOF is fine: the sum over them.
+  const Outcome some = run_cli("check " + write_deck("reaction-some-held",
+                                                     replace(read_text(kExample), "{quantity: reaction_z, node_set: wall.end,",
+                                                             "{quantity: reaction_z, node_set: wall.all,")));
+  EXPECT_EQ(some.exit_code, 0) << some.output;
+  EXPECT_EQ(some.output.find("warning"), std::string::npos) << some.output;
+}
+
+TEST(BadInput, ABinaryOrNonUtf8DeckIsNamedAsSuch) {
+  const std::string binary = write_deck("binary", "units: {length: mm, force: N}\n\x7f" "ELF\x01\x02");
+  const Outcome b = run_cli("check " + binary);
+  EXPECT_EQ(b.exit_code, 2) << b.output;
+  EXPECT_NE(b.output.find(binary + ":2:1: the deck is not a text file: byte 0x7F at line 2, column 1, is a control "
+                                   "character"),
+            std::string::npos)
+      << b.output;
+  const std::string latin = write_deck("latin-1", "title: 5 \xb5m wall\nunits: {length: mm, force: N}\n");
+  const Outcome l = run_cli("check " + latin);
+  EXPECT_EQ(l.exit_code, 2) << l.output;
+  EXPECT_NE(l.output.find(latin + ":1:10: byte 0xB5 at line 1, column 10, is not UTF-8"), std::string::npos) << l.output;
+  EXPECT_NE(l.output.find("save the deck as UTF-8"), std::string::npos) << l.output;
+}
+
+TEST(BadInput, AMeridianLineOfNoLengthOrOnTheAxisSaysHowToWriteOne) {
+  expect_error("line-no-length", "to: [0.763 mm, 1 mm]", "to: [0.763 mm, 0 mm]", "parts.wall.mesh.to",
+               "`to` is `from`, [0.763, 0] mm: the line has no length");
+  expect_error("line-on-axis", "from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm]", "from: [0 mm, 0 mm], to: [0 mm, 1 mm]",
+               "parts.wall.mesh.from", "the line lies on the axis (r = 0 at both ends)");
+}
+
+TEST(BadInput, TwoStepsOfOneNameAndAnUnusedMaterialAreWarnedAbout) {
+  std::string text = replace(read_text(kExample), "name: inflation", "name: prestretch");
+  text = replace(text, "materials:\n", "materials:\n  spare: {type: neo_hookean, mu: 10 kPa}\n");
+  const std::string path = write_deck("names", text);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("key 'steps[1].name': step name 'prestretch' is also the name of the step on line " +
+                          std::to_string(line_of(text, "name: prestretch"))),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("key 'materials.spare': material 'spare' is used by no part ('wall' uses 'aorta')"),
+            std::string::npos)
+      << o.output;
 }

@@ -22,6 +22,7 @@ TEST(OutputFolderForeign, AUsersOwnHistoryCsvIsKeptAndTheRunRefusesToWriteOverIt
   EXPECT_NE(o.output.find("history.csv' is not a file Tunica wrote"), std::string::npos) << o.output;
   EXPECT_EQ(read_text(dir + "/history.csv"), "my,own,data\n");
   EXPECT_EQ(read_text(dir + "/notes.txt"), "mine\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/vtk")) << "the refused run leaves the folder as it found it";
   // A folder of an earlier Tunica run is cleared and rewritten.
   std::filesystem::remove(dir + "/history.csv");
   ASSERT_EQ(run_cli("run " + deck + " -o " + dir + " -q -j 1").exit_code, 0);
