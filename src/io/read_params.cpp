@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -75,6 +77,16 @@ double read_quantity(const DeckNode& node, Dimension dim, const UnitSystem& unit
   double value = 0;
   std::string unit;
   if (!split_quantity(s, value, unit)) {
+    // A number beyond what a double holds (1e400): say so, not that it is none.
+    {
+      const char* begin = s.c_str();
+      while (*begin == ' ' || *begin == '\t') ++begin;
+      char* end = nullptr;
+      errno = 0;
+      const double v = std::strtod(begin, &end);
+      if (end != begin && errno == ERANGE && std::abs(v) > 1)
+        node.fail(fmt::format("the number in '{}' is too large for any value (beyond 1.8e308)", s));
+    }
     if (dim == Dimension::dimensionless) node.fail("expected a number, got '" + s + "'");
     const char* example = dim == Dimension::length     ? "0.122 mm"
                           : dim == Dimension::pressure ? "61.163 kPa"

@@ -55,7 +55,10 @@ std::vector<Change> fingerprint_changes(const Model& m, const RestartRecord& r) 
     if (it == now.end())
       changes.push_back(change(e.key, fmt::format("(was {}, now not given)", shown(e.value))));
     else if (it->second->value != e.value)
-      changes.push_back(change(e.key, fmt::format("(was {}, now {})", shown(e.value), shown(it->second->value))));
+      // A value recorded as a digest (a node list, a long text) says only that it changed.
+      changes.push_back(change(e.key, e.value.rfind("digest ", 0) == 0
+                                          ? std::string("(changed)")
+                                          : fmt::format("(was {}, now {})", shown(e.value), shown(it->second->value))));
   }
   for (const auto& e : m.fingerprint)
     if (reached(e) && !then.count(e.key)) changes.push_back(change(e.key, fmt::format("(not given before, now {})", shown(e.value))));

@@ -603,3 +603,8 @@ TEST(BadInput, TwoStepsOfOneNameAndAnUnusedMaterialAreWarnedAbout) {
             std::string::npos)
       << o.output;
 }
+
+TEST(BadInput, ANumberBeyondADoubleIsTooLargeNotNoNumber) {
+  expect_error("huge", "c: 61.163 kPa", "c: 1e400 kPa", "materials.aorta.c",
+               "the number in '1e400 kPa' is too large for any value (beyond 1.8e308)");
+}
