@@ -147,15 +147,21 @@ void Analysis::run_fixed_point_step(AnalysisObserver& observer) {
       // step's start again, on the deck's model.
       back_to_deck();
       state_ = start;
+      // The forward solve's increments are the fixed point's trial, never the run's: none is kept.
+      std::string inner = e.what();
+      if (const std::string kept = "Results of the converged increments are kept.";
+          inner.find(kept) != std::string::npos)
+        inner.replace(inner.find(kept), kept.size(),
+                      "The forward solve's increments are discarded; the files of the run before the step are kept.");
       if (k == 1)
-        throw SolveError(std::string(e.what()) +
+        throw SolveError(inner +
                          " The first forward solve of the fixed point takes the imaged geometry itself as the reference "
                          "(X₀ = x̂, theory manual §13.1), which must carry the imaged loads: a shape imaged near a load "
                          "maximum (a neo-Hookean sphere near its pressure maximum) cannot, and `method: direct` takes "
                          "no such detour");
       // Past the first iteration the forward solve starts from a reference the update (13.16) gave: the
       // hints of a solve from a deck's own reference do not apply, the course of the distance does.
-      std::string what = e.what();
+      std::string what = inner;
       if (const auto h = what.find(" Hint:"); h != std::string::npos) what.erase(h);
       const auto smallest = std::min_element(distances.begin(), distances.end());
       const std::string unit = deck.units.display_unit(Dimension::length);

@@ -337,6 +337,9 @@ TEST(FixedPointInverse, AForwardSolveThatFailsNamesTheIteration) {
     EXPECT_NE(msg.find("step 1 'zero_pressure (fixed-point iteration 1)'"), std::string::npos);
     EXPECT_NE(msg.find("X₀ = x̂"), std::string::npos);
     EXPECT_NE(msg.find("method: direct"), std::string::npos);
+    // The forward solve's increments are not the run's: the message does not call them kept.
+    EXPECT_EQ(msg.find("Results of the converged increments are kept"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("The forward solve's increments are discarded"), std::string::npos) << msg;
   }
   EXPECT_TRUE(cap.records.empty());
   EXPECT_EQ(a.checkpoint().fraction, 0);

@@ -99,9 +99,6 @@ public:
   }
   void on_fixed_point(const FixedPointRecord& r) override {
     records.push_back(r);
-    if (std::getenv("TUNICA_TRACE_PRESTRESS"))
-      std::printf("  solve %d: max |u| %.3e, %d Newton iterations, omega %.3g\n", r.iteration, r.max_distance,
-                  r.newton_iterations, r.relaxation);
   }
 };
 
