@@ -18,17 +18,53 @@ namespace tunica {
 namespace {
 
 const char* const kPieceExpected =
-    "expected a map with `type: line` or `type: arc` and its keys, or a list of such maps joined end to start "
-    "(e.g. a capsule: an arc, a line and an arc)";
+    "expected a map with `type: line`, `type: arc` or `type: points` and its keys, or a list of such maps joined "
+    "end to start (e.g. a capsule: an arc, a line and an arc)";
+
+/// `{type: points, points: [[r, z], ...]}`: the meridian's nodes as written, each pair of
+/// consecutive points one element.
+Meridian read_points_piece(const DeckNode& mesh, Model& m, long& elements) {
+  mesh.expect_map_with_keys({"type", "points"});
+  const DeckNode list =
+      mesh.required("points", ": add the meridian's nodes in order, e.g. `points: [[1 mm, 0 mm], [1.2 mm, 1 mm], "
+                              "[1 mm, 2 mm]]`");
+  if (!list.is_sequence() || list.items().size() < 2)
+    list.fail("expected a list of at least 2 points [r, z], the meridian's nodes in order (each two consecutive "
+              "points are one element)");
+  const std::vector<DeckNode> items = list.items();
+  if (m.num_nodes() + elements + static_cast<long>(items.size()) > kMaxNodes)
+    list.fail(fmt::format("the model would have more than {} nodes", kMaxNodes));
+  const std::string unit = m.units.display_unit(Dimension::length);
+  Meridian points;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const DeckNode& item = items[k];
+    if (!item.is_sequence() || item.items().size() != 2) item.fail("expected a point [r, z]");
+    const Eigen::Vector2d x(read_quantity(item.items()[0], Dimension::length, m.units),
+                            read_quantity(item.items()[1], Dimension::length, m.units));
+    if (x(0) < 0)
+      item.items()[0].fail(fmt::format("r = {:g} {} is negative: a meridian stays at r ≥ 0 (points are [r, z], the "
+                                       "radius first)",
+                                       x(0), unit));
+    if (k > 0 && x == points.back())
+      item.fail(fmt::format("point {} is point {} again: consecutive points must differ (each two are one element)",
+                            k, k - 1));
+    if (k > 0 && x(0) == 0 && points.back()(0) == 0)
+      item.fail(fmt::format("points {} and {} both lie on the axis (r = 0): an element there has no area", k - 1, k));
+    points.push_back(x);
+  }
+  elements += static_cast<long>(points.size()) - 1;
+  return points;
+}
 
 /// One generator map: its points, checked as a meridian of its own.
 Meridian read_piece(const DeckNode& mesh, Model& m, long& elements) {
   if (!mesh.is_map()) mesh.fail(kPieceExpected);
   const std::string type = mesh.required("type").as_string();
+  if (type == "points") return read_points_piece(mesh, m, elements);
   auto gen = meridian_types().find(type);
   if (gen == meridian_types().end())
-    mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc)" +
-                      did_you_mean(type, {"line", "arc"}));
+    mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc, points)" +
+                      did_you_mean(type, {"line", "arc", "points"}));
   const Params mp = read_params(mesh, gen->second.spec, m.units, {"type"});
   warn_unitless_values(mesh, gen->second.spec, m);
   elements += mp.integer("elements");
@@ -50,10 +86,13 @@ Meridian read_piece(const DeckNode& mesh, Model& m, long& elements) {
   return points;
 }
 
-/// The key of a piece that places its first point (`from` of a line, `start_angle` of an arc).
+/// The key of a piece that places its first point (`from` of a line, `start_angle` of an arc, the
+/// first of `points`).
 DeckNode start_key(const DeckNode& piece) {
   for (const char* key : {"from", "start_angle", "center"})
     if (piece.has(key)) return piece[key];
+  if (piece.has("points") && piece["points"].is_sequence() && !piece["points"].items().empty())
+    return piece["points"].items().front();
   return piece;
 }
 
@@ -89,7 +128,7 @@ std::vector<int> read_meridian_part(const DeckNode& node, Part& part, Model& m) 
             "apart: the pieces of a meridian join end to start, in node order{}",
             piece.front()(0), piece.front()(1), unit, k - 1, end(0), end(1), unit, gap, unit,
             reversed ? std::string("; this piece ends there, so it runs the other way: swap `from` and `to` (or "
-                                   "`start_angle` and `end_angle`)")
+                                   "`start_angle` and `end_angle`, or reverse its `points`)")
                      : fmt::format(" (start it at [{:g}, {:g}] {})", end(0), end(1), unit)));
       }
       // The shared node keeps the earlier piece's end, unless the later one puts it on the axis.

@@ -36,8 +36,12 @@ std::string deck_reference_markdown() {
            "`axisymmetric_shell`):\n\n";
       for (const auto& [name, t] : meridian_types())
         s += fmt::format("#### `type: {}`\n\n{}\n\n{}\n", name, t.spec.doc, params_markdown(t.spec));
+      s += "#### `type: points`\n\nA meridian through given nodes: `points: [[r, z], ...]`, at least 2, in node "
+           "order, each two consecutive points one element (lengths with or without units, as everywhere). r ≥ 0; two "
+           "consecutive points differ and do not both lie on the axis. For a shape no line or arc makes (a measured "
+           "profile, the `reference_<step>.csv` an inverse step writes).\n\n";
       s += fmt::format(
-          "#### A list of pieces\n\n`mesh:` may also be a list of `line` and `arc` maps, joined end to start into "
+          "#### A list of pieces\n\n`mesh:` may also be a list of `line`, `arc` and `points` maps, joined end to start into "
           "one meridian: each piece starts where the one before it ends (within {:g} % of the length of the shorter "
           "element that meets there), and the node there is one node of the part, so the membrane runs through it. Nodes are "
           "numbered along the whole meridian from the first piece's first node; `<part>.start` and `<part>.end` "

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "../support/capture.hpp"
 #include "../support/cli.hpp"
@@ -55,10 +56,18 @@ output:
     - {quantity: position_z, node_set: above, name: z_above}
 )";
 
-/// A sphere of radius 1 mm, pole to pole: one arc of 20 elements, or two of 10 (`element` given).
-std::string sphere(const std::string& element, bool two_arcs) {
+/// A sphere of radius 1 mm, pole to pole: one arc of 20 elements, or two of 10 (`element` given),
+/// or (`points`) the nodes of the one arc written out.
+std::string sphere(const std::string& element, bool two_arcs, bool points = false) {
+  std::string written;
+  for (int i = 0; i <= 20; ++i) {
+    const double phi = -std::numbers::pi / 2 + std::numbers::pi * i / 20;
+    const double r = i == 0 || i == 20 ? 0.0 : std::cos(phi);
+    written += fmt::format("{}[{:.17g} mm, {:.17g} mm]", i ? ", " : "", r, std::sin(phi));
+  }
   const std::string mesh =
-      two_arcs ? "\n      - {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, "
+      points   ? " {type: points, points: [" + written + "]}"
+      : two_arcs ? "\n      - {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, "
                  "elements: 10}\n      - {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: 0 deg, "
                  "end_angle: 90 deg, elements: 10}"
                : " {type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 90 deg, "
@@ -138,6 +147,30 @@ TEST(MeridianPieces, ASphereOfTwoArcsIsTheSphereOfOneArc) {
   }
 }
 
+TEST(MeridianPieces, ASphereThroughWrittenPointsIsTheSphereOfTheArc) {
+  const Eigen::VectorXd arc = final_displacement(sphere("axisymmetric_membrane", false));
+  const Eigen::VectorXd points = final_displacement(sphere("axisymmetric_membrane", false, true));
+  ASSERT_EQ(arc.size(), points.size());
+  EXPECT_LT((arc - points).cwiseAbs().maxCoeff(), 1e-10 * arc.cwiseAbs().maxCoeff());
+}
+
+TEST(MeridianPieces, WrittenPointsOffTheHalfPlaneOrRepeatedAreRefusedAtThePoint) {
+  std::string base = replace(kCapsule, "      - {type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: 40}",
+                                   "      - {type: points, points: [[1 mm, 0 mm], [1.1 mm, 5 mm], [1 mm, 10 mm]]}");
+  // 10 + 2 + 10 elements: nodes 0 … 22.
+  base = replace(replace(replace(base, "nodes: [30]", "nodes: [11]"), "nodes: [29]", "nodes: [10]"), "nodes: [31]",
+                 "nodes: [12]");
+  const Outcome ok = run_cli("check " + write_deck_file(kScratch, "points", base));
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  expect_check_error(kScratch, "points-negative", replace(base, "[1.1 mm, 5 mm]", "[-1.1 mm, 5 mm]"), "[-1.1 mm, 5 mm]",
+                     "parts.capsule.mesh[1].points[1][0]",
+                     "r = -1.1 mm is negative: a meridian stays at r ≥ 0 (points are [r, z], the radius first)");
+  expect_check_error(kScratch, "points-repeated", replace(base, "[1.1 mm, 5 mm]", "[1 mm, 0 mm]"),
+                     "type: points", "parts.capsule.mesh[1].points[1]", "point 1 is point 0 again");
+  expect_check_error(kScratch, "points-one", replace(base, "[[1 mm, 0 mm], [1.1 mm, 5 mm], [1 mm, 10 mm]]", "[[1 mm, 0 mm]]"),
+                     "type: points", "parts.capsule.mesh[1].points", "expected a list of at least 2 points [r, z]");
+}
+
 TEST(MeridianPieces, ThePiecesCountAsOnePartInCheck) {
   const Outcome o = run_cli("check " + write_deck_file(kScratch, "capsule", kCapsule));
   EXPECT_EQ(o.exit_code, 0) << o.output;
@@ -165,7 +198,7 @@ TEST(MeridianPieces, AnEmptyListOrAnItemThatIsNotAMapIsRefused) {
   expect_check_error(kScratch, "empty", replace(replace(kCapsule, pieces, ""), "    mesh:\n", "    mesh: []\n"),
                      "mesh: []", "parts.capsule.mesh", "an empty list: expected a map with `type: line`");
   expect_check_error(kScratch, "scalar-item", replace(kCapsule, "      - {type: line", "      - 3\n      - {type: line"),
-                     "      - 3", "parts.capsule.mesh[1]", "expected a map with `type: line` or `type: arc`");
+                     "      - 3", "parts.capsule.mesh[1]", "expected a map with `type: line`, `type: arc` or `type: points`");
 }
 
 TEST(MeridianPieces, AShellsPiecesThatMeetAtACornerAreRefused) {
