@@ -3,15 +3,20 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <string>
 
+#include "core/bounded_file.hpp"
+#include "core/errors.hpp"
 #include "core/limits.hpp"
+#include "core/printable.hpp"
 #include "core/suggest.hpp"
 #include "io/meridian_checks.hpp"
 #include "io/read_params.hpp"
 #include "io/unitless_values.hpp"
 #include "mesh/meridian.hpp"
+#include "mesh/meridian_csv.hpp"
 
 namespace tunica {
 
@@ -21,10 +26,57 @@ const char* const kPieceExpected =
     "expected a map with `type: line`, `type: arc` or `type: points` and its keys, or a list of such maps joined "
     "end to start (e.g. a capsule: an arc, a line and an arc)";
 
+/// `{type: points, file: F, nodes: [first, last]}`: the nodes of a meridian CSV file (a
+/// `reference_<step>.csv`), read relative to the deck's folder.
+Meridian read_points_file(const DeckNode& mesh, Model& m, long& elements) {
+  namespace fs = std::filesystem;
+  const std::string written = mesh["file"].as_string();
+  fs::path path(written);
+  if (path.is_relative()) path = fs::path(m.deck_file).parent_path() / path;
+  long first = 0, last = 0;
+  if (mesh.has("nodes")) {
+    const DeckNode range = mesh["nodes"];
+    if (!range.is_sequence() || range.items().size() != 2)
+      range.fail("expected `[first, last]`, the node numbers of the file's first column (1 first)");
+    first = range.items()[0].as_integer();
+    last = range.items()[1].as_integer();
+    if (first < 1 || last <= first)
+      range.fail(fmt::format("expected 1 ≤ first < last, got [{}, {}]", first, last));
+  }
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    mesh["file"].fail(fmt::format("no such file: {}{}", printable(path.lexically_normal().string(), 200),
+                                  fs::path(written).is_relative() ? " (read relative to the deck's folder)" : ""));
+  Meridian points;
+  try {
+    points = parse_meridian_csv(read_file_bounded(path.string(), kMaxMeridianCsvBytes, "meridian file"),
+                                path.string(), m.units, first, last);
+  } catch (const InputError& e) {
+    // The file's own line, and where the deck names it.
+    throw InputError(e.where(), e.reason() + fmt::format(" (the meridian of {}:{}, key '{}')", m.deck_file,
+                                                         mesh["file"].where().line, mesh["file"].path()));
+  }
+  if (m.num_nodes() + elements + static_cast<long>(points.size()) > kMaxNodes)
+    mesh["file"].fail(fmt::format("the model would have more than {} nodes", kMaxNodes));
+  for (std::size_t k = 1; k < points.size(); ++k)
+    if (points[k] == points[k - 1] || (points[k](0) == 0 && points[k - 1](0) == 0))
+      mesh["file"].fail(fmt::format("nodes {} and {} of the file {}: an element there has no {}",
+                                    k + (first > 0 ? first - 1 : 0), k + 1 + (first > 0 ? first - 1 : 0),
+                                    points[k] == points[k - 1] ? "coincide" : "both lie on the axis (R = 0)",
+                                    points[k] == points[k - 1] ? "length" : "area"));
+  elements += static_cast<long>(points.size()) - 1;
+  return points;
+}
+
 /// `{type: points, points: [[r, z], ...]}`: the meridian's nodes as written, each pair of
 /// consecutive points one element.
 Meridian read_points_piece(const DeckNode& mesh, Model& m, long& elements) {
-  mesh.expect_map_with_keys({"type", "points"});
+  mesh.expect_map_with_keys({"type", "points", "file", "nodes"});
+  if (mesh.has("file") && mesh.has("points"))
+    mesh["file"].fail("give the nodes as `points` or as a `file`, not both");
+  if (mesh.has("nodes") && !mesh.has("file"))
+    mesh["nodes"].fail("`nodes: [first, last]` picks the rows of a `file`; with `points`, list just the points meant");
+  if (mesh.has("file")) return read_points_file(mesh, m, elements);
   const DeckNode list =
       mesh.required("points", ": add the meridian's nodes in order, e.g. `points: [[1 mm, 0 mm], [1.2 mm, 1 mm], "
                               "[1 mm, 2 mm]]`");

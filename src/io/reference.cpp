@@ -39,7 +39,9 @@ std::string deck_reference_markdown() {
       s += "#### `type: points`\n\nA meridian through given nodes: `points: [[r, z], ...]`, at least 2, in node "
            "order, each two consecutive points one element (lengths with or without units, as everywhere). r ≥ 0; two "
            "consecutive points differ and do not both lie on the axis. For a shape no line or arc makes (a measured "
-           "profile, the `reference_<step>.csv` an inverse step writes).\n\n";
+           "profile). Or `file: F` (relative to the deck's folder), a CSV with the header `node,R_<unit>,Z_<unit>` and "
+           "the rows `1,R,Z`, `2,R,Z`, … — the `reference_<step>.csv` an axisymmetric inverse step writes — with "
+           "`nodes: [first, last]` to take the rows of those node numbers only (one part of a model of several).\n\n";
       s += fmt::format(
           "#### A list of pieces\n\n`mesh:` may also be a list of `line`, `arc` and `points` maps, joined end to start into "
           "one meridian: each piece starts where the one before it ends (within {:g} % of the length of the shorter "

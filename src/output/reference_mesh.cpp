@@ -19,7 +19,8 @@ std::string reference_mesh_text(const Model& m, const Eigen::VectorXd& u) {
   const auto X = [&](int n, int c) { return m.X[n](c) + u(d * n + c); };
   std::string out;
   if (m.geometry == Geometry::axisymmetric) {
-    out = "node,R_mm,Z_mm\n";
+    const std::string unit = m.units.display_unit(Dimension::length);
+    out = "node,R_" + unit + ",Z_" + unit + "\n";
     for (int n = 0; n < m.num_nodes(); ++n) out += fmt::format("{},{:.17g},{:.17g}\n", n + 1, X(n, 0), X(n, 1));
     return out;
   }

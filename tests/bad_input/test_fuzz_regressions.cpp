@@ -10,6 +10,7 @@
 #include "fit/inflation_data.hpp"
 #include "core/printable.hpp"
 #include "mesh/gmsh_reader.hpp"
+#include "mesh/meridian_csv.hpp"
 #include "output/restart_file.hpp"
 
 namespace fs = std::filesystem;
@@ -71,6 +72,19 @@ TEST(FuzzRegressions, MshInputsAreReadOrRefusedWithAnInputError) {
         const std::string m = e.what();
         EXPECT_TRUE(tunica::is_printable_line(m)) << m;
       }
+    }
+  }
+}
+
+TEST(FuzzRegressions, MeridianCsvInputsAreReadOrRefusedWithAnInputError) {
+  const auto files = inputs("meridian_csv");
+  EXPECT_GE(files.size(), 2u);
+  const tunica::UnitSystem units("mm", "N");
+  for (const auto& f : files) {
+    try {
+      const tunica::Meridian m = tunica::parse_meridian_csv(tunica::test::read_text(f.string()), f.string(), units, 0, 0);
+      EXPECT_GE(m.size(), 2u) << f;
+    } catch (const tunica::InputError&) {
     }
   }
 }
