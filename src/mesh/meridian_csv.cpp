@@ -82,7 +82,9 @@ Meridian parse_meridian_csv(const std::string& text, const std::string& file, co
     if (node > kMaxNodes) fail(line, fmt::format("the file has more than {} nodes", kMaxNodes));
     if (first > 0 && (node < first || node > last)) continue;
     if (v[1] < 0) fail(line, fmt::format("R = {} is negative: a meridian stays at R ≥ 0", f[1]));
-    points.emplace_back(v[1] * scale, v[2] * scale);
+    const Eigen::Vector2d x(v[1] * scale, v[2] * scale);
+    if (!x.allFinite()) fail(line, fmt::format("R = {}, Z = {} in {} is beyond what a model holds", f[1], f[2], unit));
+    points.push_back(x);
   }
   if (first > 0 && last > node)
     fail(line, fmt::format("the file ends at node {}, before node {} of `nodes: [{}, {}]`", node, last, first, last));
