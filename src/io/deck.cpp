@@ -289,7 +289,9 @@ void warn_names_used_twice_or_never(const DeckNode& deck, Model& m) {
                                     "restart files name steps, so give each its own name",
                                     it->first, it->second)));
   }
-  for (const auto& [name, node] : deck["materials"].entries()) {
+  for (const auto& entry : deck["materials"].entries()) {
+    const std::string& name = entry.first;
+    const auto& node = entry.second;
     if (std::any_of(m.parts.begin(), m.parts.end(), [&](const Part& p) { return p.material_name == name; })) continue;
     std::string used;
     for (const Part& p : m.parts) used += fmt::format("{}'{}' uses '{}'", used.empty() ? "" : ", ", p.name, p.material_name);
