@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 #include <numeric>
+#include <unordered_map>
 
 #include "model/node_label.hpp"
 
@@ -24,17 +27,40 @@ std::vector<CoincidentNodes> coincident_node_warnings(const Model& m) {
   double size = 0;
   for (int n : nodes) size = std::max(size, m.X[n].cwiseAbs().maxCoeff());
   const double tol = 1e-9 * std::max(size, 1e-300);
-  std::sort(nodes.begin(), nodes.end(), [&](int a, int b) { return m.X[a].x() < m.X[b].x(); });
+  // Nodes in cells of size tol: a pair within tol lies in one cell or two neighbouring ones, so
+  // each node is compared with the nodes of the 27 cells around it (O(n), whatever the layout).
+  using Cell = std::array<long long, 3>;
+  struct CellHash {
+    std::size_t operator()(const Cell& c) const {
+      return std::hash<long long>()(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+    }
+  };
+  const auto cell_of = [&](int n) {
+    Cell c;
+    for (int k = 0; k < 3; ++k) c[k] = static_cast<long long>(std::floor(m.X[n](k) / tol));
+    return c;
+  };
+  std::unordered_map<Cell, std::vector<int>, CellHash> cells;
+  if (m.parts.size() > 1)
+    for (int n : nodes) cells[cell_of(n)].push_back(n);
   // Per pair of parts: the first pair of nodes found and how many.
   std::map<std::pair<int, int>, std::pair<std::pair<int, int>, int>> found;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    for (std::size_t j = i + 1; j < nodes.size() && m.X[nodes[j]].x() - m.X[nodes[i]].x() <= tol; ++j) {
-      const int a = nodes[i], b = nodes[j];
-      if (part_of[a] == part_of[b] || (m.X[a] - m.X[b]).norm() > tol) continue;
-      const auto key = std::minmax(part_of[a], part_of[b]);
-      auto [it, fresh] = found.try_emplace({key.first, key.second}, std::make_pair(std::make_pair(a, b), 0));
-      ++it->second.second;
-    }
+  for (int a : m.parts.size() > 1 ? nodes : std::vector<int>{}) {
+    const Cell c = cell_of(a);
+    for (long long i = -1; i <= 1; ++i)
+      for (long long j = -1; j <= 1; ++j)
+        for (long long k = -1; k <= 1; ++k) {
+          const auto it = cells.find(Cell{c[0] + i, c[1] + j, c[2] + k});
+          if (it == cells.end()) continue;
+          for (int b : it->second) {
+            if (b <= a || part_of[a] == part_of[b] || (m.X[a] - m.X[b]).norm() > tol) continue;
+            const auto key = std::minmax(part_of[a], part_of[b]);
+            auto [at, fresh] = found.try_emplace({key.first, key.second}, std::make_pair(std::make_pair(a, b), 0));
+            ++at->second.second;
+            at->second.first = std::min(at->second.first, std::make_pair(a, b));  // the lowest pair, however found
+          }
+        }
+  }
   const bool axisymmetric = m.dofs_per_node() != 3;
   for (const auto& [parts, first] : found) {
     const auto [a, b] = first.first;
