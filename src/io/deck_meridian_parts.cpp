@@ -16,6 +16,7 @@
 #include "io/read_params.hpp"
 #include "io/unitless_values.hpp"
 #include "mesh/meridian.hpp"
+#include "mesh/meridian_crossing.hpp"
 #include "mesh/meridian_csv.hpp"
 
 namespace tunica {
@@ -190,6 +191,30 @@ std::vector<int> read_meridian_part(const DeckNode& node, Part& part, Model& m) 
     } else {
       points = piece;
     }
+  }
+  if (auto c = meridian_crossing(points)) {
+    for (int k = 0; k < 2; ++k)  // round-off of a generated angle (cos 180° = −1.2e-16) printed as 0
+      if (std::abs(c->at(k)) <= 1e-9 * (points[1] - points[0]).norm()) c->at(k) = 0;
+    // At the piece that holds the later element.
+    std::size_t piece = 0;
+    while (piece < joints.size() && joints[piece] <= c->second) ++piece;
+    const bool ring = c->first == 0 && c->second + 2 == static_cast<int>(points.size()) &&
+                      (points.front() - points.back()).norm() <= 1e-9 * (points[1] - points[0]).norm();
+    pieces[piece].fail(fmt::format(
+        "{}: a meridian runs from one end to the other without crossing or running back over itself{}",
+        ring ? fmt::format("the meridian's last node lies on its first, at [{:g}, {:g}] {}, where the ring is not "
+                           "joined",
+                           c->at(0), c->at(1), unit)
+        : c->second == c->first + 1
+            ? fmt::format("the meridian turns back on itself at node {}, [{:g}, {:g}] {}: element {} runs back along "
+                          "element {}",
+                          c->second, c->at(0), c->at(1), unit, c->second, c->first)
+            : fmt::format("the meridian crosses itself at [{:g}, {:g}] {}: element {} (nodes {} and {}) meets element {} "
+                          "(nodes {} and {})",
+                          c->at(0), c->at(1), unit, c->second, c->second, c->second + 1, c->first, c->first,
+                          c->first + 1),
+        ring ? " (a closed ring, a torus, is not a meridian Tunica joins: end it on the axis or leave it open)"
+             : " (check the pieces' ends and directions, or the points' order)"));
   }
   const int first = m.num_nodes();
   for (std::size_t i = 0; i < points.size(); ++i) {

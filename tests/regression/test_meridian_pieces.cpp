@@ -225,3 +225,25 @@ steps:
                                                        replace(deck, "axisymmetric_shell", "axisymmetric_membrane")));
   EXPECT_EQ(o.exit_code, 0) << o.output;
 }
+
+TEST(MeridianPieces, AMeridianThatCrossesFoldsBackOrClosesIsRefusedAtThePiece) {
+  // The line runs back down over itself.
+  expect_check_error(kScratch, "folded",
+                     replace(kCapsule, "      - {type: arc, center: [0 mm, 10 mm], radius: 1 mm, start_angle: 0 deg, "
+                                       "end_angle: 90 deg, elements: 10}",
+                             "      - {type: line, from: [1 mm, 10 mm], to: [1 mm, 5 mm], elements: 10}"),
+                     "to: [1 mm, 5 mm]", "parts.capsule.mesh[2]",
+                     "the meridian turns back on itself at node 50, [1, 10] mm: element 50 runs back along element 49");
+  // The upper cap swung below the equator crosses the cylinder.
+  expect_check_error(kScratch, "crossing",
+                     replace(kCapsule, "      - {type: arc, center: [0 mm, 10 mm], radius: 1 mm, start_angle: 0 deg, "
+                                       "end_angle: 90 deg, elements: 10}",
+                             "      - {type: line, from: [1 mm, 10 mm], to: [2 mm, 11 mm], elements: 2}\n"
+                             "      - {type: line, from: [2 mm, 11 mm], to: [0.5 mm, 5 mm], elements: 4}"),
+                     "to: [0.5 mm, 5 mm]", "parts.capsule.mesh[3]", "the meridian crosses itself at [1, ");
+  // A full circle closes on its first node, not joined there.
+  const std::string ring = replace(kCapsule, kCapsule.substr(kCapsule.find("    mesh:\n"), kCapsule.find("node_sets:") - kCapsule.find("    mesh:\n")),
+                                   "    mesh: {type: arc, center: [2 mm, 0 mm], radius: 1 mm, start_angle: -180 deg, end_angle: 180 deg, elements: 60}\n");
+  expect_check_error(kScratch, "ring", ring, "start_angle: -180 deg", "parts.capsule.mesh",
+                     "the meridian's last node lies on its first, at [1, 0] mm, where the ring is not joined");
+}
