@@ -108,6 +108,38 @@ std::string load_scale_hint(const Model& model, const Step& step) {
   return "";
 }
 
+/// A boundary value at least this many times the model's size is named as the likely cause.
+constexpr double kDisplacementScaleFactor = 3;
+
+/// A displacement the step prescribes beyond kDisplacementScaleFactor times the diagonal of the
+/// model's bounding box (a stretch of 1 + that at least, where tissue and balloons reach 2–3):
+/// a value or a unit mistyped. "" if none.
+std::string displacement_scale_hint(const Model& model, const Step& step) {
+  if (model.X.empty()) return "";
+  Eigen::Vector3d lo = model.X.front(), hi = lo;
+  for (const Eigen::Vector3d& x : model.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const bool axisymmetric = model.dofs_per_node() != 3;
+  if (axisymmetric) lo(0) = std::min(lo(0), 0.0);  // the meridian turns about the axis
+  const double size = (hi - lo).norm();
+  if (!(size > 0)) return "";
+  const std::string len = model.units.display_unit(Dimension::length);
+  const auto in_len = [&](double x) { return model.units.from_internal(x, len, Dimension::length); };
+  for (const Boundary& b : model.boundaries) {
+    const auto target = step.targets.find(b.name);
+    if (target == step.targets.end()) continue;
+    const bool translation =
+        std::any_of(b.dofs.begin(), b.dofs.end(), [&](int d) { return d < (axisymmetric ? 2 : 3); });
+    const double d = std::abs(target->second);
+    if (!translation || !(d > kDisplacementScaleFactor * size)) continue;
+    return fmt::format(
+        "boundary '{}' is moved by {:.4g} {}, {:.3g} times the size of the whole model (the diagonal of its bounding "
+        "box, {:.4g} {}): a stretch of at least {:.3g} somewhere, where arteries and balloons reach 2 to 3. Check the value "
+        "and its unit (the deck's length unit is {}); more iterations or smaller increments will not carry it.",
+        b.name, in_len(d), len, d / size, in_len(size), len, 1 + d / size, len);
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string failure_hints(const Model& model, const Step& step, const NewtonResult& last, const StepTrace& converged,
@@ -279,6 +311,7 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
     // Free to move rigidly: the cause whatever the curve says. Held: a load with no equilibrium,
     // unless the curve says the pressure still rises there.
     if (const std::string free = free_body_hint(model, attempted.step); !free.empty()) return " Hint: " + free;
+    if (std::string h = displacement_scale_hint(model, step); !h.empty()) return " Hint: " + h;
     if (!limit.empty()) return limit;
     if (!rising.empty()) return rising;
     add(held_singular_hint(model, step, converged, attempted));
@@ -287,6 +320,7 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   if (!limit.empty()) return limit;
   // No limit point on the way, and a load far beyond what the wall carries: a value or unit mistyped.
   if (std::string h = load_scale_hint(model, step); !h.empty()) return " Hint: " + h;
+  if (std::string h = displacement_scale_hint(model, step); !h.empty()) return " Hint: " + h;
   if (still_converging) add(more_iterations);
   else hints += rising;
   // No other evidence, and no increment converged from the stress-free reference (the first step):

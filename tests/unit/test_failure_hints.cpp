@@ -510,3 +510,37 @@ steps:
   EXPECT_EQ(failure_hints(fine, fine.steps[0], failed("diverging", 1e9), start, trying(0.01)).find("pressure scale"),
             std::string::npos);
 }
+
+TEST(FailureHints, ADisplacementFarBeyondTheModelsSizeIsNamed) {
+  // The rat aorta's tube, 1 mm long and 0.763 mm in radius (diagonal 1.258 mm), pulled 99 mm: a
+  // stretch of 100, which no setting carries (a value or unit mistyped).
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  aorta: {type: fung, c: 61.163 kPa, a1: 0.68238, a2: 0.60558, a4: 0.1067}
+parts:
+  wall: {element: axisymmetric_membrane, material: aorta, thickness: 0.122 mm, mesh: {type: line, from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm], elements: 1}}
+boundary:
+  base: {node_set: wall.start, dofs: [z]}
+  stretch: {node_set: wall.end, dofs: [z]}
+loads:
+  lumen: {type: pressure, part: wall}
+steps:
+  - {name: prestretch, increments: 6, set: {stretch: 99 mm}}
+)";
+  const Model m = read_deck_text(deck, "aorta.yaml");
+  const StepTrace start = along({{0.0, 1.0}});
+  for (const char* failure : {"diverging", "the residual is not finite"}) {
+    const std::string h = failure_hints(m, m.steps[0], failed(failure, 1e9), start, trying(0));
+    EXPECT_NE(h.find("boundary 'stretch' is moved by 99 mm, 78.7 times the size of the whole model (the diagonal of "
+                     "its bounding box, 1.258 mm): a stretch of at least 79.7"),
+              std::string::npos)
+        << h;
+  }
+  // Its 0.6 mm (a stretch of 1.6) is no such value, and neither is 3 mm (4 mm long, a balloon's stretch).
+  for (const char* fine : {"0.6 mm", "3 mm"}) {
+    const Model ok = read_deck_text(replace_first(deck, "99 mm", fine), "aorta.yaml");
+    EXPECT_EQ(failure_hints(ok, ok.steps[0], failed("diverging", 1e9), start, trying(0)).find("size of the whole model"),
+              std::string::npos)
+        << fine;
+  }
+}
