@@ -53,4 +53,11 @@ void MechanicalProblem::describe(IterationRecord& rec) {
   previous_set_.swap(active_set_);
 }
 
+int MechanicalProblem::entering_contact() const {
+  int entering = 0;
+  if (previous_set_.size() == active_set_.size())
+    for (std::size_t i = 0; i < active_set_.size(); ++i) entering += active_set_[i] && !previous_set_[i];
+  return entering;
+}
+
 }  // namespace tunica

@@ -28,6 +28,7 @@ public:
   const TangentMatrix& jacobian(int iteration) override;
   void step(const Eigen::VectorXd& dx, double factor) override;
   void describe(IterationRecord& rec) override;
+  int entering_contact() const override;
   double max_correction() const override { return max_correction_; }
   bool allows_factorization_reuse() const override { return true; }
 

@@ -36,6 +36,7 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
   int k0 = 0;
   std::vector<double> residuals;  // ‖R‖ of every iteration of this attempt
   bool factored = false;           // the solver holds a factorization of this attempt's Jacobian
+  bool contact_step_taken = false;  // a whole correction into contact was kept though ‖r‖ rose
   if (first) {
     if (auto f = first->take(solver, on_iteration)) {
       dx = std::move(f->dx);
@@ -64,11 +65,19 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
       // stiff in-plane modes of little energy while leaving a small slope).
       const bool slope_ok = inadmissible.empty() && std::isfinite(rec.residual) && k > 0 && slope0 != 0 &&
                             std::abs(problem.work(dx, r)) <= 0.5 * std::abs(slope0);
+      // The first whole correction of an attempt that brings nodes into contact is kept though ‖r‖
+      // rose: the penalty forces of the overshoot are what the next tangent, with those nodes
+      // active, corrects; halved, it would stop short of the surface and let the active set grow a
+      // node or two per iteration. Once only: later ones are searched as any (theory manual (7.4)).
+      const bool entering = !contact_step_taken && rec.backtracks == 0 && inadmissible.empty() &&
+                            problem.entering_contact() > 0;
       const bool worse = !inadmissible.empty() || !std::isfinite(rec.residual) ||
-                         (rec.residual > previous_residual && !slope_ok);
+                         (rec.residual > previous_residual && !slope_ok && !entering);
       if (k == 0 || !worse || !problem.allows_backtracking() || !settings.line_search ||
-          rec.backtracks == settings.line_search_halvings)
+          rec.backtracks == settings.line_search_halvings) {
+        contact_step_taken = contact_step_taken || (k > 0 && entering && rec.residual > previous_residual);
         break;
+      }
       ++rec.backtracks;
       problem.step(dx, -0.5);  // back to half the correction taken so far
       dx *= 0.5;               // the correction actually taken

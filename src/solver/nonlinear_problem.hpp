@@ -50,6 +50,10 @@ public:
   /// tangent (solver/perturbed_solve.hpp).
   virtual double max_correction() const = 0;
 
+  /// Slave nodes in contact at the latest evaluation that were not at the last kept one (nodes
+  /// entering contact); 0 for a problem without contact.
+  virtual int entering_contact() const { return 0; }
+
   /// False when a correction must be taken whole: no line search (7.4).
   virtual bool allows_backtracking() const { return true; }
   /// False when a singular Jacobian must not be solved with a perturbed diagonal.
