@@ -346,10 +346,13 @@ void warn_edge_frame_quantity(const DeckNode& node, const HistoryRequest& r, Mod
       node.where(),
       fmt::format("'{}' is taken along the material directions of part '{}', which has no `frame`: its direction 1 follows each "
                   "element's first edge, and on this mesh it turns by more than {:g} deg between {:.0f} % of the "
-                  "neighbouring elements, so the values mix directions (a mean of lambda_1 is neither the hoop nor "
-                  "the axial stretch). Give the part a frame (a vessel along z: `frame: {{type: cylindrical, axis: "
+                  "neighbouring elements, so the values mix directions (a mean of {} is {}). Give the part a frame (a vessel along z: `frame: {{type: cylindrical, axis: "
                   "[0, 0, 1]}}`), or record quantities that need none (sigma_max, sigma_min, lambda_3, thickness)",
-                  r.quantity, m.parts[static_cast<std::size_t>(r.part)].name, kEdgeFrameTurnDeg, 100 * turned)));
+                  r.quantity, m.parts[static_cast<std::size_t>(r.part)].name, kEdgeFrameTurnDeg, 100 * turned,
+                  r.quantity,
+                  r.quantity.back() == '2' && r.quantity.size() > 3 && r.quantity[r.quantity.size() - 2] == '1'
+                      ? "not the shear between the hoop and axial directions"
+                      : "neither the hoop nor the axial value")));
 }
 
 /// The name of step k (0-based) of the deck's `steps` list, "step" if it has none.

@@ -186,15 +186,20 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   // A step that stretches a 3-D membrane with no pressure on it, before or during: a closed wall then
   // carries no hoop tension and nothing resists ovalizing (neutral stability, user guide §3.1); Newton
   // wanders along those modes, the more the finer the mesh. A little pressure keeps the wall round.
-  if (model.dofs_per_node() == 3 && !model.loads.empty() && step.volume_control.load < 0 && converged.count() > 0 &&
-      std::all_of(attempted.pressure.begin(), attempted.pressure.end(), [](double p) { return p == 0; }) &&
-      std::all_of(converged.last(0).pressure.begin(), converged.last(0).pressure.end(), [](double p) { return p == 0; }))
+  const bool slack = model.dofs_per_node() == 3 && !model.loads.empty() && step.volume_control.load < 0 &&
+                     converged.count() > 0 &&
+                     std::all_of(attempted.pressure.begin(), attempted.pressure.end(), [](double p) { return p == 0; }) &&
+                     std::all_of(converged.last(0).pressure.begin(), converged.last(0).pressure.end(),
+                                 [](double p) { return p == 0; });
+  if (slack)
     add(fmt::format(
         "step '{}' moves the membrane with no pressure on it: a closed or curved 3-D membrane without pressure carries "
         "no tension across the stretch and has no stiffness against ovalizing (neutral stability, user guide §3.1), so "
         "Newton wanders along those modes, the more the finer the mesh. Apply a little pressure together with the "
         "stretch (e.g. `{}: 10 mmHg` in this step's `set`), which keeps the wall round; the step after it raises the "
-        "pressure to its value",
+        "pressure to its value. On an unstructured mesh of 3-node triangles the faceted wall is not round without "
+        "pressure and its hoop stress scatters about zero: no iteration limit or increment size gets such a step "
+        "past, only the pressure (or 6-node triangles, `Mesh.ElementOrder = 2`).",
         step.name, model.loads.front().name));
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
@@ -321,7 +326,7 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   // No limit point on the way, and a load far beyond what the wall carries: a value or unit mistyped.
   if (std::string h = load_scale_hint(model, step); !h.empty()) return " Hint: " + h;
   if (std::string h = displacement_scale_hint(model, step); !h.empty()) return " Hint: " + h;
-  if (still_converging) add(more_iterations);
+  if (still_converging && !slack) add(more_iterations);
   else hints += rising;
   // No other evidence, and no increment converged from the stress-free reference (the first step):
   // an unstressed membrane resists motion out of its surface only through its curvature.
