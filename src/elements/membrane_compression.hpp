@@ -10,7 +10,10 @@
 namespace tunica {
 
 /// Green–Lagrange strains at or below this everywhere: an unstrained state, nowhere compressed.
-constexpr double kUnstrained = 1e-10;
+/// A state this close to the reference (a step back to zero load, converged to the residual
+/// tolerance, leaves strains of 10⁻⁹ and stresses of 10⁻⁸ kPa of either sign) is no evidence of
+/// wrinkling: a membrane strained by a millionth carries a millionth of its modulus.
+constexpr double kUnstrained = 1e-6;
 
 /// A point counts as compressed where σ_min < −kCompressionShare s, s the largest |principal
 /// stress| of its part. Below 1 % of the part's largest stress a compression is within the

@@ -166,6 +166,7 @@ std::vector<int> read_meridian_part(const DeckNode& node, Part& part, Model& m) 
   const std::string unit = m.units.display_unit(Dimension::length);
   Meridian points;
   std::vector<int> joints;
+  Meridian previous;  // the piece before, as written
   long elements = 0;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const Meridian piece = read_piece(pieces[k], m, elements);
@@ -175,14 +176,25 @@ std::vector<int> read_meridian_part(const DeckNode& node, Part& part, Model& m) 
                                 (piece[1] - piece[0]).norm());
       const double gap = (piece.front() - end).norm();
       if (!(gap <= kMeridianJoinFraction * h)) {
-        const bool reversed = (piece.back() - end).norm() <= kMeridianJoinFraction * h;
+        const auto near = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+          return (a - b).norm() <= kMeridianJoinFraction * h;
+        };
+        const std::string swap = "swap `from` and `to` (or `start_angle` and `end_angle`, or reverse its `points`)";
+        std::string advice = fmt::format(" (start it at [{:g}, {:g}] {})", end(0), end(1), unit);
+        if (near(piece.back(), end))
+          advice = "; this piece ends there, so it runs the other way: " + swap;
+        else if (k == 1 && near(piece.front(), previous.front()))
+          advice = fmt::format("; it starts where mesh[0] starts, so mesh[0] runs the other way: in mesh[0], {}", swap);
+        else if (near(piece.back(), previous.front()))
+          advice = fmt::format(
+              "; it ends where mesh[{}] starts, so the list runs from the meridian's far end: list the pieces in "
+              "the meridian's order, this one before mesh[{}] (and if each piece also runs the other way, keep the "
+              "list and in every piece {})",
+              k - 1, k - 1, swap);
         start_key(pieces[k]).fail(fmt::format(
             "this piece starts at [{:g}, {:g}] {} but the piece before it (mesh[{}]) ends at [{:g}, {:g}] {}, {:.4g} {} "
             "apart: the pieces of a meridian join end to start, in node order{}",
-            piece.front()(0), piece.front()(1), unit, k - 1, end(0), end(1), unit, gap, unit,
-            reversed ? std::string("; this piece ends there, so it runs the other way: swap `from` and `to` (or "
-                                   "`start_angle` and `end_angle`, or reverse its `points`)")
-                     : fmt::format(" (start it at [{:g}, {:g}] {})", end(0), end(1), unit)));
+            piece.front()(0), piece.front()(1), unit, k - 1, end(0), end(1), unit, gap, unit, advice));
       }
       // The shared node keeps the earlier piece's end, unless the later one puts it on the axis.
       if (piece.front()(0) == 0) points.back() = piece.front();
@@ -191,6 +203,7 @@ std::vector<int> read_meridian_part(const DeckNode& node, Part& part, Model& m) 
     } else {
       points = piece;
     }
+    previous = piece;
   }
   if (auto c = meridian_crossing(points)) {
     for (int k = 0; k < 2; ++k)  // round-off of a generated angle (cos 180° = −1.2e-16) printed as 0

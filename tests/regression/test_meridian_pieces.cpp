@@ -192,6 +192,24 @@ TEST(MeridianPieces, APieceThatRunsTheOtherWayIsToldToSwapItsEnds) {
                      "this piece ends there, so it runs the other way: swap `from` and `to`");
 }
 
+TEST(MeridianPieces, AFirstPieceOrAListThatRunsTheOtherWayIsNamed) {
+  // mesh[0] written from the equator down to the pole: the line starts where mesh[0] starts.
+  expect_check_error(kScratch, "first-reversed",
+                     replace(kCapsule, "start_angle: -90 deg, end_angle: 0 deg", "start_angle: 0 deg, end_angle: -90 deg"),
+                     "from: [1 mm, 0 mm]", "parts.capsule.mesh[1].from",
+                     "it starts where mesh[0] starts, so mesh[0] runs the other way: in mesh[0], swap `from` and `to`");
+  // Every piece written backwards and listed in the meridian's order: the line ends where mesh[0]
+  // starts; both ways out are named.
+  const std::string backwards =
+      replace(replace(replace(kCapsule, "start_angle: -90 deg, end_angle: 0 deg", "start_angle: 0 deg, end_angle: -90 deg"),
+                      "from: [1 mm, 0 mm], to: [1 mm, 10 mm]", "from: [1 mm, 10 mm], to: [1 mm, 0 mm]"),
+              "start_angle: 0 deg, end_angle: 90 deg", "start_angle: 90 deg, end_angle: 0 deg");
+  expect_check_error(kScratch, "all-reversed", backwards, "from: [1 mm, 10 mm]", "parts.capsule.mesh[1].from",
+                     "it ends where mesh[0] starts, so the list runs from the meridian's far end: list the pieces in "
+                     "the meridian's order, this one before mesh[0] (and if each piece also runs the other way, keep "
+                     "the list and in every piece swap `from` and `to`");
+}
+
 TEST(MeridianPieces, AnEmptyListOrAnItemThatIsNotAMapIsRefused) {
   const std::string pieces = kCapsule.substr(kCapsule.find("      - {type: arc"),
                                              kCapsule.find("node_sets:") - kCapsule.find("      - {type: arc"));
