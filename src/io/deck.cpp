@@ -490,6 +490,19 @@ void read_node_sets(const DeckNode& deck, Model& m) {
       const std::vector<DeckNode> items = nodes.items();
       for (int k = 0; k < static_cast<int>(items.size()); ++k) {
         const DeckNode& item = items[k];
+        // A name in the list (`[start, 60]`): the names stand alone; in a list, the index they stand for.
+        if (item.is_scalar()) {
+          const std::string w = item.as_string();
+          const bool named = w == "start" || w == "end" || w == "all";
+          if (named && w != "all" && axisym)
+            item.fail(fmt::format("'{}' is a node set's name, which stands alone (`nodes: {}`), not an item of a list "
+                                  "of indices: in the list, the part's {} node is {}",
+                                  w, w, w, w == "start" ? 0 : static_cast<long>(pn.size()) - 1));
+          if (named)
+            item.fail(fmt::format("'{}' is a node set's name, which stands alone (`nodes: {}`), not an item of a list "
+                                  "of indices ({} … {})",
+                                  w, w, 0, pn.size() - 1));
+        }
         const long i = item.as_integer();
         if (i < 0 || i >= static_cast<long>(pn.size()))
           item.fail(fmt::format("node index {} is outside the part (0 … {})", i, pn.size() - 1));

@@ -498,6 +498,15 @@ TEST(MessageClasses, NodeNumberOutsideThePartGivesTheNumberAndTheRange) {
                       "nodes: [0, 7]", "node_sets.mid.nodes[1]", "node index 7 is outside the part", "(0 … 1)");
 }
 
+TEST(MessageClasses, ASetNameInAListOfIndicesGivesTheIndexItStandsFor) {
+  expect_deck_message("node-name-in-list", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [start, 1]}\n\nboundary:",
+                      "nodes: [start, 1]", "node_sets.mid.nodes[0]",
+                      "'start' is a node set's name, which stands alone (`nodes: start`), not an item of a list of "
+                      "indices: in the list, the part's start node is 0", "");
+  expect_deck_message("node-name-in-list-end", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [0, end]}\n\nboundary:",
+                      "nodes: [0, end]", "node_sets.mid.nodes[1]", "the part's end node is 1", "");
+}
+
 TEST(MessageClasses, ANodeListedTwiceInANodeSetNamesTheSetTheNodeAndBothPlaces) {
   // Held, loaded or reported twice otherwise (a reaction summed twice); most often a mistyped index.
   const Outcome o = expect_deck_message("node-twice", "boundary:", "node_sets:\n  mid: {part: wall, nodes: [0, 1, 0]}\n\nboundary:",
