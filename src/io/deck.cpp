@@ -942,6 +942,43 @@ void read_output(const DeckNode& deck, Model& m) {
 }
 
 
+/// What a file that is no deck looks like, from its first line (a mesh or surface given in the
+/// deck's place), with where it goes instead; "" if nothing known.
+std::string not_a_deck(const std::string& text) {
+  std::size_t i = text.find_first_not_of(" \t\r\n");
+  const std::string first = i == std::string::npos ? "" : text.substr(i, std::min(text.find('\n', i), text.size()) - i);
+  const auto starts = [&](const char* s) { return first.rfind(s, 0) == 0; };
+  std::string kind, where;
+  if (starts("$MeshFormat")) {
+    kind = "a Gmsh mesh (.msh)";
+    where = "`mesh: {type: gmsh, file: wall.msh, surface: wall}`";
+  } else if (starts("SetFactory") || starts("Point(") || starts("Point (") || starts("lc ") || starts("lc=") ||
+             starts("//") || starts("Merge")) {
+    kind = "a Gmsh script (.geo), it seems";
+    where = "`mesh: {type: gmsh, file: wall.geo, surface: wall}` (run with `--allow-scripts`)";
+  } else if (starts("solid ")) {
+    kind = "an ASCII STL surface";
+    where = "through a Gmsh script that merges it and names it, `Merge \"vessel.stl\"; Physical Surface(\"wall\") = "
+            "{1};`, as `mesh: {type: gmsh, file: vessel.geo, surface: wall}` (run with `--allow-scripts`)";
+  } else if (starts("<?xml") || starts("<VTKFile")) {
+    kind = "a VTK XML file (a result or a surface)";
+  } else if (starts("# vtk DataFile")) {
+    kind = "a legacy VTK file";
+  } else if (first == "ply") {
+    kind = "a PLY surface";
+    where = "through a Gmsh script that merges it and names it, `Merge \"vessel.ply\"; Physical Surface(\"wall\") = "
+            "{1};`, as `mesh: {type: gmsh, file: vessel.geo, surface: wall}` (run with `--allow-scripts`)";
+  } else if (starts("node,R_")) {
+    kind = "a meridian CSV (a reference_<step>.csv)";
+    where = "`mesh: {type: points, file: reference.csv}`";
+  }
+  if (kind.empty()) return "";
+  return fmt::format(" (this file is {}, not a deck: give the YAML deck, {})", kind,
+                     where.empty() ? "which names the part's mesh (user guide §3)"
+                     : where.rfind("through", 0) == 0 ? "whose part reads it " + where
+                                                      : "whose part names it in its mesh, " + where);
+}
+
 }  // namespace
 
 std::vector<ComponentSpec> deck_sections() {
@@ -959,7 +996,8 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     throw yaml_syntax_error(e, text, file);
   }
   const DeckNode deck(root, file, "", {file, 1, 1, ""});
-  if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ...");
+  if (!root.IsMap()) deck.fail("a deck is a YAML map with the sections units, materials, parts, steps, ..." +
+                               not_a_deck(text));
   deck.expect_map_with_keys(kTopKeys);
 
   Model m;

@@ -582,6 +582,27 @@ TEST(BadInput, ABinaryOrNonUtf8DeckIsNamedAsSuch) {
   EXPECT_NE(l.output.find("save the deck as UTF-8"), std::string::npos) << l.output;
 }
 
+TEST(BadInput, AMeshOrSurfaceGivenAsTheDeckIsNamedWithWhereItGoes) {
+  const std::string msh = write_deck("given-msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+  const Outcome m = run_cli("check " + msh);
+  EXPECT_EQ(m.exit_code, 2) << m.output;
+  EXPECT_NE(m.output.find(msh + ":1:1: a deck is a YAML map"), std::string::npos) << m.output;
+  EXPECT_NE(m.output.find("(this file is a Gmsh mesh (.msh), not a deck: give the YAML deck, whose part names it in its "
+                          "mesh, `mesh: {type: gmsh, file: wall.msh, surface: wall}`)"),
+            std::string::npos)
+      << m.output;
+  const std::string stl = write_deck("given-stl", "solid vessel\n  facet normal 0 0 1\n");
+  const Outcome s = run_cli("check " + stl);
+  EXPECT_EQ(s.exit_code, 2) << s.output;
+  EXPECT_NE(s.output.find("this file is an ASCII STL surface, not a deck"), std::string::npos) << s.output;
+  EXPECT_NE(s.output.find("`Merge \"vessel.stl\"; Physical Surface(\"wall\") = {1};`"), std::string::npos) << s.output;
+  // A YAML scalar that is none of these: the plain message.
+  const std::string word = write_deck("given-word", "hello\n");
+  const Outcome w = run_cli("check " + word);
+  EXPECT_EQ(w.exit_code, 2) << w.output;
+  EXPECT_EQ(w.output.find("this file is"), std::string::npos) << w.output;
+}
+
 TEST(BadInput, AMeridianLineOfNoLengthOrOnTheAxisSaysHowToWriteOne) {
   expect_error("line-no-length", "to: [0.763 mm, 1 mm]", "to: [0.763 mm, 0 mm]", "parts.wall.mesh.to",
                "`to` is `from`, [0.763, 0] mm: the line has no length");
