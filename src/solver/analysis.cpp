@@ -441,7 +441,8 @@ void Analysis::run_step(AnalysisObserver& observer) {
       const std::string why = everted_load >= 0 ? r.failure
                                                 : fmt::format("{} (last relative residual {:.3e})", r.failure,
                                                               r.last_relative_residual);
-      if (stiffened_start && settings.stiffen_stress_free_start) {
+      // Only an attempt that took the stiffened start has a plain one to try: any other would repeat it.
+      if (r.stiffened_start && settings.stiffen_stress_free_start) {
         settings.stiffen_stress_free_start = false;
         observer.on_retry(info, why, "retrying with the plain start (stress_free_start: exact)");
         continue;

@@ -41,9 +41,12 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
     BorderedProblem bordered(equilibrium, loads, constraint->load, constraint->target);
     std::optional<VolumeStartStiffness> start;
     if (settings.stiffen_stress_free_start && stress_free) start.emplace(bordered, *converged, settings);
-    return newton(bordered, solver, settings, on_iteration, start ? &*start : nullptr);
+    NewtonResult r = newton(bordered, solver, settings, on_iteration, start ? &*start : nullptr);
+    r.stiffened_start = start.has_value();
+    return r;
   }
   const StartStiffness* stiffness = nullptr;
+  bool stiffened = false;
   std::unique_ptr<StartStiffness> inverse_k0;  // the metric of a regularized tangent
   if (inverse) {
     // The inverse tangent is regularized at every iteration (13.11), the first included, also the
@@ -59,6 +62,7 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
     equilibrium.add_hook(std::make_unique<ScaledRegularization>(
         *inverse_k0, [&equilibrium] { return equilibrium.last_residual_norm(); }));
   } else if (settings.stiffen_stress_free_start && stress_free) {
+    stiffened = true;
     auto hook = std::make_unique<StartStiffness>(system, loads);
     stiffness = hook.get();
     equilibrium.add_hook(std::move(hook));
@@ -66,7 +70,9 @@ NewtonResult solve_increment(const System& system, LinearSolver& solver, LoadSta
   if (settings.symmetrize_pressure_stiffness && !inverse) equilibrium.add_hook(std::make_unique<Symmetrization>());
   std::optional<TangentPredictor> predictor;
   if (converged && settings.tangent_predictor) predictor.emplace(equilibrium, *converged, stiffness);
-  return newton(equilibrium, solver, settings, on_iteration, predictor ? &*predictor : nullptr);
+  NewtonResult r = newton(equilibrium, solver, settings, on_iteration, predictor ? &*predictor : nullptr);
+  r.stiffened_start = stiffened;
+  return r;
 }
 
 }  // namespace tunica

@@ -52,6 +52,9 @@ struct NewtonResult {
   int active_contacts = 0;
   /// The attempt stopped on a singular tangent (`failure` says so; why, the model's holds or the
   /// load, is for the caller to tell: solver/failure_hints.hpp).
+  /// The increment's first correction was the stiffened start (theory manual §7.2): a plain retry
+  /// differs from this attempt.
+  bool stiffened_start = false;
   bool singular = false;
 };
 

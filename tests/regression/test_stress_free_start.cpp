@@ -192,6 +192,38 @@ output: {vtk: false}
   for (const auto& r : c.retries) EXPECT_EQ(r.first.increment, 1);
 }
 
+TEST(StressFreeStart, AnAttemptThatTookNoStiffenedStartIsNotRetriedAtTheSameSize) {
+  // A 3-D stretch from rest without pressure takes the slack stiffness of (7.14), not the stiffened
+  // start: a plain retry would repeat it. With one iteration allowed it fails, and is cut back
+  // at once.
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  wall: {type: neo_hookean, mu: 30 kPa}
+parts:
+  vessel:
+    element: membrane
+    material: wall
+    thickness: 0.2 mm
+    mesh: {type: tube, radius: 1 mm, length: 4 mm, around: 16, along: 4, shape: quad}
+boundary:
+  bottom: {node_set: vessel.bottom, dofs: [z]}
+  top: {node_set: vessel.top, dofs: [z]}
+  sx: {node_set: vessel.x0, dofs: [x]}
+  sy: {node_set: vessel.y0, dofs: [y]}
+loads:
+  blood: {type: pressure, part: vessel}
+steps:
+  - {name: stretch, increments: 1, set: {top: 1 mm}, solver: {max_iterations: 1, max_cutbacks: 1}}
+output: {vtk: false}
+)";
+  Capture c;
+  const Model model = read_deck_text(deck, "slack-tube.yaml");
+  Analysis a(model);
+  EXPECT_THROW(a.run(c), SolveError);
+  EXPECT_TRUE(c.retries.empty());
+  EXPECT_EQ(c.cutbacks, 1);
+}
+
 TEST(StressFreeStart, InflationAfterAPrestretchAloneStartsAsFromRest) {
   // A closed 3-D tube of quadrilaterals stretched axially alone (4 increments) has no hoop tension
   // and ovalizes freely; the inflation step after it raises the pressure from zero. Its first
