@@ -225,6 +225,37 @@ output: {{vtk: false}}
 """
 
 
+def balloon_sleeve(penalty):
+    """A Mooney-Rivlin capsule balloon (R 1 mm, H 0.05 mm, 4 mm long) inflated to 0.5 MPa against a
+    rigid sleeve of radius 1.3 mm in 10 increments: first contact with the user guide's penalty."""
+    return f"""title: campaign balloon against a rigid sleeve, penalty {penalty} N/mm^3
+units: {{length: mm, force: N}}
+materials:
+  balloon: {{type: mooney_rivlin, b1: 2.0 MPa, b2: 0.5 MPa}}
+parts:
+  balloon:
+    element: axisymmetric_membrane
+    material: balloon
+    thickness: 0.05 mm
+    mesh:
+      - {{type: arc, center: [0 mm, 0 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, elements: 20}}
+      - {{type: line, from: [1 mm, 0 mm], to: [1 mm, 4 mm], elements: 40}}
+      - {{type: arc, center: [0 mm, 4 mm], radius: 1 mm, start_angle: 0 deg, end_angle: 90 deg, elements: 20}}
+boundary:
+  south: {{node_set: balloon.start, dofs: [r, z]}}
+  north: {{node_set: balloon.end, dofs: [r]}}
+loads:
+  inflation: {{type: pressure, part: balloon}}
+rigid_surfaces:
+  sleeve: {{type: cylinder, radius: 1.3 mm, side: inside}}
+contact:
+  balloon_sleeve: {{slave: balloon, rigid: sleeve, penalty: {penalty} N/mm^3, offset: 0.025 mm}}
+steps:
+  - {{name: inflate, increments: 10, set: {{inflation: 0.5 MPa}}}}
+output: {{vtk: false}}
+"""
+
+
 def decks():
     out = {}
     for mat in MATERIALS:
@@ -255,6 +286,9 @@ def decks():
     out["closed-tube-hgo-quad-128x40-stretch-alone"] = tube_stretch_alone("hgo", 128, 40, "quad")
     out["closed-tube-fung-tri-48x12-stretch-alone"] = tube_stretch_alone("fung", 48, 12, "triangle")
     out["closed-tube-neo_hookean-tri-64x16-stretch-alone"] = tube_stretch_alone("neo_hookean", 64, 16, "staggered_triangle")
+    # A balloon meeting a rigid sleeve with the guide's penalty and ten times it.
+    out["balloon-sleeve-penalty-1e5"] = balloon_sleeve("1e5")
+    out["balloon-sleeve-penalty-1e6"] = balloon_sleeve("1e6")
     # The shipped examples as they are, and the angioplasty balloon made softer.
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "..", "examples")
