@@ -117,13 +117,20 @@ ContactPoint chain_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Eig
 
 Eigen::VectorXd slave_tributary_areas(const Eigen::Ref<const Eigen::Matrix2Xd>& reference_chain) {
   const Eigen::Index m = reference_chain.cols();
-  Eigen::VectorXd A = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd A = Eigen::VectorXd::Zero(m), cones = Eigen::VectorXd::Zero(m);
   for (Eigen::Index j = 0; j + 1 < m; ++j) {
     const double L = (reference_chain.col(j + 1) - reference_chain.col(j)).norm();
     A(j) += 0.5 * L;
     A(j + 1) += 0.5 * L;
+    // A node on the axis (a pole): the consistent area ∫ N_s 2π r ds, 2π L (R_s/3 + R_other/6) per
+    // element, the weight a pressure load gives it, so that a flat patch carries p_c = p there too
+    // (the lumped 2π R_s L/2 is 0 there, and a pole would go through unresisted).
+    const double Rj = reference_chain(0, j), Rk = reference_chain(0, j + 1);
+    cones(j) += 2 * std::numbers::pi * L * (Rj / 3 + Rk / 6);
+    cones(j + 1) += 2 * std::numbers::pi * L * (Rk / 3 + Rj / 6);
   }
-  for (Eigen::Index i = 0; i < m; ++i) A(i) *= 2.0 * std::numbers::pi * reference_chain(0, i);
+  for (Eigen::Index i = 0; i < m; ++i)
+    A(i) = reference_chain(0, i) > 0 ? A(i) * 2.0 * std::numbers::pi * reference_chain(0, i) : cones(i);
   return A;
 }
 

@@ -95,7 +95,9 @@ ContactPoint chain_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Eig
 /// Tributary reference areas of the nodes of a slave chain (2×m, reference
 /// positions (R, Z)): A_i = 2π R_i (L_{i−1} + L_i)/2 with L_j the reference length
 /// of segment j (a missing neighbour counts 0) — the lumped (row-sum with R at
-/// the node) area the node stands for.
+/// the node) area the node stands for. A node on the axis (R_i = 0, a pole) stands for its
+/// consistent area instead, A_i = Σ 2π L_j R_other/6 (the weight a pressure load gives it), since
+/// the lumped area is 0 there.
 Eigen::VectorXd slave_tributary_areas(const Eigen::Ref<const Eigen::Matrix2Xd>& reference_chain);
 
 }  // namespace tunica

@@ -45,7 +45,7 @@ const ComponentSpec& contact_spec() {
       "part or a node set) with a rigid surface (`rigid`) or a deformable master (`master`: a membrane part, "
       "its meridian in node order, or an ordered node set, a chain of nodes in the listed order; exactly one "
       "of `rigid` and `master`). Each slave node s stands for its tributary reference area A_s = 2π R_s "
-      "(L_left + L_right)/2 (rigid pairs: on the slave part's meridian; deformable pairs: on the slave chain "
+      "(L_left + L_right)/2 (a node on the axis, a pole: its consistent area 2π L R_next/6 per element, as a pressure load weighs it; rigid pairs: on the slave part's meridian; deformable pairs: on the slave chain "
       "itself, the part's meridian or the node set in its order) and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = "
       "(signed distance to the surface) − offset; it is active when g_N < 0. A deformable master's normal is "
       "its direction of travel turned clockwise (a chain running towards +z faces +r): the slave must be on "
@@ -300,6 +300,18 @@ void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c,
                        "state; the normal is the master's direction turned clockwise): reverse "
                        "`master_orientation`, or name only the slave nodes that face the master",
                        k, p.text("slave"), c.master_name, s, m.units.display_unit(Dimension::length)));
+  const Eigen::Matrix2Xd master = reference_chain(m, c.master);
+  std::vector<int> order(c.nodes.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  check_contact_offset(
+      p, c, m,
+      [&](const Eigen::Vector2d& x, double& s) {
+        const ChainProjection w =
+            project_on_chain(x, master, std::numeric_limits<double>::infinity(), kMasterEndTolerance);
+        s = w.signed_distance;
+        return w.feature != ChainFeature::none;
+      },
+      c.nodes, order);
   set_chain_areas(c, m);
 }
 
@@ -340,6 +352,10 @@ void read_contacts(const DeckNode& deck, Model& m) {
       c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
       read_rigid_slave(p, c, m);
       check_rigid_side(p, c, m);
+      const RigidSurface& surface = m.rigid_surfaces[c.rigid];
+      check_contact_offset(
+          p, c, m, [&](const Eigen::Vector2d& x, double& s) { return rigid_signed_distance(surface, x, s); },
+          m.parts[c.part].nodes, c.area_index);
     } else {
       int master_part = -1;
       read_deformable_pair(node, p, c, m, &master_part);

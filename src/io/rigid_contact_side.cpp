@@ -45,6 +45,37 @@ std::string reversed_points(const RigidPolyline& line, const std::string& unit) 
 
 }  // namespace
 
+bool rigid_signed_distance(const RigidSurface& r, const Eigen::Vector2d& x, double& s) { return signed_distance(r, x, s); }
+
+void check_contact_offset(const Params& p, const ContactPair& c, const Model& m,
+                          const std::function<bool(const Eigen::Vector2d&, double&)>& distance,
+                          const std::vector<int>& chain, const std::vector<int>& index) {
+  const double offset = c.law.offset;
+  if (!(offset > 0)) return;
+  int worst = -1;
+  double worst_depth = 0, worst_gap = 0, worst_length = 0;
+  for (std::size_t k = 0; k < c.nodes.size() && k < index.size(); ++k) {
+    double s = 0;
+    if (!distance(m.X[c.nodes[k]].head<2>(), s)) continue;
+    const double h = element_length(m, chain, static_cast<std::size_t>(index[k]));
+    if (s < -kBehind * h) continue;  // behind the surface: the side's own error
+    const double depth = offset - s;
+    if (depth > kDeepBehind * h && depth > worst_depth) worst = static_cast<int>(k), worst_depth = depth, worst_gap = s,
+                                                           worst_length = h;
+  }
+  if (worst < 0) return;
+  const std::string unit = m.units.display_unit(Dimension::length);
+  const Eigen::Vector3d& x = m.X[c.nodes[worst]];
+  p.fail("offset", fmt::format(
+      "contact pair '{}': the offset, {:.4g} {}, is larger than the gap the slave starts with: slave node {} (at r = "
+      "{:.4g} {}, z = {:.4g} {}; its elements are {:.4g} {} long) starts {:.4g} {} from the surface, so it counts as "
+      "penetrated by {:.4g} {} from the first iteration (g_N = gap − offset) and the penalty would push the membrane "
+      "away by that in the first increment. The offset is the distance the surfaces keep (e.g. half the sum of the "
+      "thicknesses): give one below the smallest starting gap, or start the slave that much farther from the surface",
+      c.name, offset, unit, index[worst], x(0), unit, x(1), unit, worst_length, unit, worst_gap, unit, worst_depth,
+      unit));
+}
+
 void check_rigid_side(const Params& p, const ContactPair& c, const Model& m) {
   const RigidSurface& r = m.rigid_surfaces[c.rigid];
   const std::vector<int>& chain = m.parts[c.part].nodes;

@@ -603,6 +603,37 @@ TEST(BadInput, AMeshOrSurfaceGivenAsTheDeckIsNamedWithWhereItGoes) {
   EXPECT_EQ(w.output.find("this file is"), std::string::npos) << w.output;
 }
 
+TEST(BadInput, AContactOffsetLargerThanTheStartingGapIsRefusedAtTheOffset) {
+  // A tube at r = 1.5 mm in a sleeve of 2 mm with an offset of 0.6 mm: penetrated by 0.1 mm at rest.
+  std::string deck = R"(units: {length: mm, force: N}
+materials:
+  mr: {type: mooney_rivlin, b1: 0.5 MPa, b2: 0.1 MPa}
+parts:
+  tube: {element: axisymmetric_membrane, material: mr, thickness: 0.05 mm, mesh: {type: line, from: [1.5 mm, 0 mm], to: [1.5 mm, 5 mm], elements: 20}}
+rigid_surfaces:
+  sleeve: {type: cylinder, radius: 2.0 mm, side: inside}
+contact:
+  tube_sleeve: {slave: tube, rigid: sleeve, penalty: 1e3 N/mm^3, offset: 0.6 mm}
+boundary:
+  z0: {node_set: tube.start, dofs: [z]}
+  z1: {node_set: tube.end, dofs: [z]}
+loads:
+  p: {type: pressure, part: tube}
+steps:
+  - {name: inflate, increments: 20, set: {p: 60 kPa}}
+)";
+  const Outcome o = run_cli("check " + write_deck("offset-big", deck));
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("key 'contact.tube_sleeve.offset': contact pair 'tube_sleeve': the offset, 0.6 mm, is larger "
+                          "than the gap the slave starts with: slave node 0 (at r = 1.5 mm, z = 0 mm; its elements are "
+                          "0.25 mm long) starts 0.5 mm from the surface, so it counts as penetrated by 0.1 mm"),
+            std::string::npos)
+      << o.output;
+  // An offset below the gap is fine.
+  const Outcome fine = run_cli("check " + write_deck("offset-fine", replace(deck, "offset: 0.6 mm", "offset: 0.4 mm")));
+  EXPECT_EQ(fine.exit_code, 0) << fine.output;
+}
+
 TEST(BadInput, AMeridianLineOfNoLengthOrOnTheAxisSaysHowToWriteOne) {
   expect_error("line-no-length", "to: [0.763 mm, 1 mm]", "to: [0.763 mm, 0 mm]", "parts.wall.mesh.to",
                "`to` is `from`, [0.763, 0] mm: the line has no length");

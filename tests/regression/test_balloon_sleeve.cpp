@@ -64,3 +64,44 @@ TEST(BalloonSleeve, FirstContactWithTheGuidesPenaltyConvergesWithoutCutBacks) {
   EXPECT_LT(1e5 * pen, 2.6 * pc);
   EXPECT_NEAR(rmax, 1.3 - 0.025 + pen, 1e-9);   // on the sleeve less the offset
 }
+
+TEST(BalloonFloor, APoleOnAFlatSurfaceCarriesTheInflationPressure) {
+  // A Mooney–Rivlin balloon (R 5 mm, H 0.1 mm) hung from its north pole and inflated to 9 kPa onto
+  // a rigid floor 1 mm below its south pole: the flat patch on the floor carries p_c = p, its pole
+  // node included (its consistent area, theory manual §9; the lumped 2π R L/2 is 0 on the axis,
+  // and the pole went through the floor with p_c reported at 11.6 MPa).
+  const Model m = read_deck_text(R"(units: {length: mm, force: N}
+materials:
+  latex: {type: mooney_rivlin, b1: 150 kPa, b2: 30 kPa}
+parts:
+  ball:
+    element: axisymmetric_membrane
+    material: latex
+    thickness: 0.1 mm
+    mesh: {type: arc, center: [0 mm, 0 mm], radius: 5 mm, start_angle: -90 deg, end_angle: 90 deg, elements: 60}
+rigid_surfaces:
+  floor: {type: polyline, points: [[20 mm, -6 mm], [0 mm, -6 mm]]}
+contact:
+  ball_floor: {slave: ball, rigid: floor, penalty: 1e3 N/mm^3, offset: 0.05 mm}
+boundary:
+  south: {node_set: ball.start, dofs: [r]}
+  north: {node_set: ball.end, dofs: [r, z]}
+loads:
+  p: {type: pressure, part: ball}
+steps:
+  - {name: blow, increments: 20, set: {p: 9 kPa}}
+output:
+  history:
+    - {quantity: contact_pressure, contact: ball_floor, unit: kPa}
+    - {quantity: contact_penetration, contact: ball_floor, unit: mm}
+    - {quantity: position_z, node_set: ball.start, unit: mm}
+)",
+                                 "floor.yaml");
+  Capture c;
+  Analysis a(m);
+  ASSERT_NO_THROW(a.run(c));
+  const auto& end = c.rows.back().values;
+  EXPECT_NEAR(end[0], 9.0, 0.01);                 // the largest p_c, at the pole: p
+  EXPECT_NEAR(end[1], 9e-3 / 1e3 * 1.4, 0.5e-5);  // ε·pen = p_c times the patch's area stretch (≈ 1.4)
+  EXPECT_NEAR(end[2], -6 + 0.05 - end[1], 1e-7);  // the pole on the floor less the offset (to 1 % of pen)
+}
