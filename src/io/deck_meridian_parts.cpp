@@ -185,6 +185,24 @@ std::vector<int> read_meridian_part(const DeckNode& node, Part& part, Model& m) 
           advice = "; this piece ends there, so it runs the other way: " + swap;
         else if (k == 1 && near(piece.front(), previous.front()))
           advice = fmt::format("; it starts where mesh[0] starts, so mesh[0] runs the other way: in mesh[0], {}", swap);
+        else if (const std::size_t later = [&] {
+                   for (std::size_t j = k + 1; j < pieces.size(); ++j) {
+                     long count = 0;
+                     const std::size_t warned = m.warnings.size();  // read again later: warned then
+                     try {
+                       const bool starts_here = near(read_piece(pieces[j], m, count).front(), end);
+                       m.warnings.resize(warned);
+                       if (starts_here) return j;
+                     } catch (const InputError&) {
+                       m.warnings.resize(warned);
+                     }
+                   }
+                   return std::size_t{0};
+                 }();
+                 later > 0)
+          advice = fmt::format("; mesh[{}] starts there: list the pieces in the meridian's order, mesh[{}] before this "
+                               "one",
+                               later, later);
         else if (near(piece.back(), previous.front()))
           advice = fmt::format(
               "; it ends where mesh[{}] starts, so the list runs from the meridian's far end: list the pieces in "

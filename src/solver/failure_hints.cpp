@@ -191,16 +191,23 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
                      std::all_of(attempted.pressure.begin(), attempted.pressure.end(), [](double p) { return p == 0; }) &&
                      std::all_of(converged.last(0).pressure.begin(), converged.last(0).pressure.end(),
                                  [](double p) { return p == 0; });
+  bool linear_triangles = false;  // a part meshed with 3-node triangles: 6-node ones are a way out
+  for (const Part& part : model.parts)
+    for (const ElementBlock& b : part.blocks) linear_triangles = linear_triangles || b.kind == ElementKind::tri3;
   if (slack)
     add(fmt::format(
         "step '{}' moves the membrane with no pressure on it: a closed or curved 3-D membrane without pressure carries "
         "no tension across the stretch and has no stiffness against ovalizing (neutral stability, user guide §3.1), so "
         "Newton wanders along those modes, the more the finer the mesh. Apply a little pressure together with the "
         "stretch (e.g. `{}: 10 mmHg` in this step's `set`), which keeps the wall round; the step after it raises the "
-        "pressure to its value. On an unstructured mesh of 3-node triangles the faceted wall is not round without "
-        "pressure and its hoop stress scatters about zero: no iteration limit or increment size gets such a step "
-        "past, only the pressure (or 6-node triangles, `Mesh.ElementOrder = 2`).",
-        step.name, model.loads.front().name));
+        "pressure to its value. {}",
+        step.name, model.loads.front().name,
+        linear_triangles
+            ? "On an unstructured mesh of 3-node triangles the faceted wall is not round without pressure and its hoop "
+              "stress scatters about zero: no iteration limit or increment size gets such a step past, only the "
+              "pressure (or 6-node triangles, `Mesh.ElementOrder = 2`)."
+            : "On a mesh whose wall is not round without pressure (a bulge, a segmented vessel) no iteration limit or "
+              "increment size gets such a step past, only the pressure."));
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
   // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.

@@ -210,6 +210,17 @@ TEST(MeridianPieces, AFirstPieceOrAListThatRunsTheOtherWayIsNamed) {
                      "the list and in every piece swap `from` and `to`");
 }
 
+TEST(MeridianPieces, PiecesListedOutOfOrderNameThePieceThatStartsThere) {
+  // arc, arc, line: the upper arc (mesh[1]) does not start where the lower one ends; the line does.
+  const std::string line = "      - {type: line, from: [1 mm, 0 mm], to: [1 mm, 10 mm], elements: 40}\n";
+  const std::string upper =
+      "      - {type: arc, center: [0 mm, 10 mm], radius: 1 mm, start_angle: 0 deg, end_angle: 90 deg, elements: 10}\n";
+  ASSERT_NE(kCapsule.find(line + upper), std::string::npos);
+  expect_check_error(kScratch, "out-of-order", replace(kCapsule, line + upper, upper + line), "start_angle: 0 deg",
+                     "parts.capsule.mesh[1].start_angle",
+                     "; mesh[2] starts there: list the pieces in the meridian's order, mesh[2] before this one");
+}
+
 TEST(MeridianPieces, AnEmptyListOrAnItemThatIsNotAMapIsRefused) {
   const std::string pieces = kCapsule.substr(kCapsule.find("      - {type: arc"),
                                              kCapsule.find("node_sets:") - kCapsule.find("      - {type: arc"));
