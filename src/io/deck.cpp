@@ -29,6 +29,7 @@
 #include "io/unitless_values.hpp"
 #include "io/yaml_syntax.hpp"
 #include "model/axis_pole_check.hpp"
+#include "model/boundary_motion_check.hpp"
 #include "model/coincident_nodes_check.hpp"
 #include "model/edge_frame_check.hpp"
 #include "model/frame_axis_check.hpp"
@@ -1093,6 +1094,14 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   // An axisymmetric membrane's pole whose r is free: at the part.
   for (const PoleMisfit& w : free_pole_warnings(m))
     m.warnings.push_back(format_location(deck["parts"][m.parts[w.part].name].where(), w.message));
+  // A boundary value that moves nodes past the model's far side or across the axis: at the value.
+  for (const MotionMisfit& w : boundary_motion_warnings(m)) {
+    const std::vector<DeckNode> steps = deck["steps"].items();
+    const SourceLocation at = w.step < static_cast<int>(steps.size())
+                                  ? steps[w.step]["set"][m.boundaries[w.boundary].name].where()
+                                  : m.boundaries[w.boundary].where;
+    m.warnings.push_back(format_location(at, w.message));
+  }
   // A symmetry boundary that holds another DOF than the plane its nodes lie on: at the boundary.
   for (const SymmetryMisfit& s : symmetry_name_warnings(m))
     m.warnings.push_back(format_location(m.boundaries[s.boundary].where, s.message));

@@ -462,7 +462,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
                               "allowed)",
                               dt, step.solver.max_cutbacks);
         std::string hint = everted_load >= 0
-                               ? eversion_hint(*model_, everted_load)
+                               ? eversion_hint(*model_, everted_load, step, s, state_.trace)
                                : failure_hints(*model_, step, r, state_.trace, trial, reference_volume_);
         const std::string contact = contact_hints(r, s);
         // No other evidence: the last converged state's compression, theory manual (7.13).

@@ -1,5 +1,7 @@
 #include "solver/failure_hints.hpp"
 
+#include "model/boundary_motion_check.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include "assembly/pressure_load_checks.hpp"
 #include "elements/membrane_compression.hpp"
 #include "materials/membrane_material.hpp"
+#include "model/boundary_motion_check.hpp"
 #include "model/meridian_curvature.hpp"
 #include "model/rigid_motion_check.hpp"
 #include "model/surface_curvature.hpp"
@@ -113,7 +116,8 @@ constexpr double kDisplacementScaleFactor = 3;
 
 /// A displacement the step prescribes beyond kDisplacementScaleFactor times the diagonal of the
 /// model's bounding box (a stretch of 1 + that at least, where tissue and balloons reach 2–3):
-/// a value or a unit mistyped. "" if none.
+/// a value or a unit mistyped; else one that moves nodes past the model's far side or across the
+/// axis (model/boundary_motion_check.hpp). "" if none.
 std::string displacement_scale_hint(const Model& model, const Step& step) {
   if (model.X.empty()) return "";
   Eigen::Vector3d lo = model.X.front(), hi = lo;
@@ -137,6 +141,9 @@ std::string displacement_scale_hint(const Model& model, const Step& step) {
         "and its unit (the deck's length unit is {}); more iterations or smaller increments will not carry it.",
         b.name, in_len(d), len, d / size, in_len(size), len, 1 + d / size, len);
   }
+  // A value that moves nodes past the model's far side or across the axis.
+  if (!model.steps.empty() && &step >= &model.steps.front() && &step <= &model.steps.back())
+    return boundary_motion_hint(model, static_cast<int>(&step - &model.steps.front()));
   return "";
 }
 
@@ -428,8 +435,33 @@ std::string compression_hint(const System& system, const Eigen::VectorXd& u, con
       parts, path);
 }
 
-std::string eversion_hint(const Model& model, int load) {
+std::string eversion_hint(const Model& model, int load, const Step& step, int step_index, const StepTrace& converged) {
   const std::string& name = model.loads[load].name;
+  // A boundary value that moves nodes past the model's far side or across the axis turns the
+  // surface inside out whatever the increments: that value, first.
+  if (const std::string motion = boundary_motion_hint(model, step_index); !motion.empty())
+    return " Hint: " + motion;
+  // A step that leaves every pressure where it was: its boundary motion everted the surface.
+  const auto target = step.targets.find(name);
+  const bool pressure_moves =
+      step.volume_control.load >= 0 ||
+      (target != step.targets.end() &&
+       (converged.count() == 0 ||
+        std::abs(std::abs(target->second) - std::abs(converged.first(0).pressure[static_cast<std::size_t>(load)])) >
+            1e-12 * std::abs(target->second)));
+  if (!pressure_moves) {
+    std::string moved;
+    for (const Boundary& b : model.boundaries)
+      if (const auto t = step.targets.find(b.name); t != step.targets.end())
+        moved += fmt::format("{}'{}'", moved.empty() ? "" : ", ", b.name);
+    return fmt::format(
+        " Hint: step '{}' changes no pressure, so its boundary motion ({}) turned the surface of load '{}' inside out "
+        "(its enclosed volume of the other sign), which no real membrane reaches: check each value, its sign and its "
+        "unit (a boundary value is the displacement from the reference, user guide §3.1), and that the motion "
+        "compresses the wall no more than it can take: a membrane carries no compression, it wrinkles (user guide "
+        "§5, compression).",
+        step.name, moved.empty() ? std::string("none set in this step") : moved, name);
+  }
   return fmt::format(
       " Hint: Newton found equilibrium only with the surface of load '{}' turned inside out (its enclosed volume of "
       "the other sign), which no real membrane reaches: the increment starts too far from the state it should end "

@@ -63,9 +63,11 @@ std::string compression_hint(const System& system, const Eigen::VectorXd& u, con
 
 /// The hint of an increment whose every attempt, down to the smallest allowed, converged to a
 /// state that load `load`'s surface reaches only by passing through itself (the enclosed volume
-/// changed sign, solver/analysis.hpp): smaller increments, or volume control, which keeps the
-/// volume's sign.
-std::string eversion_hint(const Model& model, int load);
+/// changed sign, solver/analysis.hpp): a boundary value of step `step_index` (0-based) that moves
+/// nodes past the model's far side or across the axis (model/boundary_motion_check.hpp); else, for
+/// a step that changes no pressure (`converged`: its start and converged increments), its boundary
+/// motion; else smaller increments, or volume control, which keeps the volume's sign.
+std::string eversion_hint(const Model& model, int load, const Step& step, int step_index, const StepTrace& converged);
 
 /// The slave nodes of a deformable contact pair that are active at u, next to each other on the
 /// slave chain, lie this many master segments apart on average (or more): the slave is the

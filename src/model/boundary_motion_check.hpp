@@ -1,0 +1,33 @@
+#pragma once
+// A boundary value that moves its nodes past the far side of the model (an end pulled through the
+// other end: the wall would turn inside out) or, in an axisymmetric model, across the axis. A
+// boundary value is a displacement from the reference (user guide §3.1); such a value is most
+// often a position written as a displacement, or a sign or unit mistyped. Newton then converges
+// to crushed states (stretches near zero, stresses of hundreds of MPa) or stops at an everted
+// surface, neither of which says why.
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace tunica {
+
+struct MotionMisfit {
+  int step = -1;      ///< 0-based
+  int boundary = -1;
+  std::string message;  ///< names the boundary, its node set, the value, where the nodes end and what they pass
+};
+
+/// One per step target of a forward step that moves the translational DOF d of a boundary's node
+/// set so that
+///  - (axisymmetric, d = r) a node of the set ends at r < 0: across the axis;
+///  - or every node of the set ends beyond the model's opposite extreme in d (the set lies on the
+///    far side of the middle of the model's extent in d and moves toward the other side, past
+///    all of it), while another boundary holds d on nodes outside the set: the part between
+///    them would have to pass through itself.
+std::vector<MotionMisfit> boundary_motion_warnings(const Model& m);
+
+/// The misfits of step `step` (0-based) alone, as one sentence each, for a failure's hint.
+std::string boundary_motion_hint(const Model& m, int step);
+
+}  // namespace tunica
