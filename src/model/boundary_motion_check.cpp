@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "model/node_label.hpp"
@@ -18,20 +19,25 @@ const char* dof_name(const Model& m, int d) {
   return m.dofs_per_node() == 3 ? solid[d] : axisym[d];
 }
 
-}  // namespace
+/// One step value of a boundary's translational DOF, with where its node set lies and goes.
+struct Motion {
+  int step = -1, boundary = -1, dof = -1;
+  double u = 0;             ///< the value (internal length)
+  double slo = 0, shi = 0;  ///< the node set's extent in the DOF at the reference
+  int nlo = -1;             ///< the set's node of least coordinate
+  double lo = 0, hi = 0;    ///< the model's extent in the DOF
+  int other = -1;           ///< a boundary holding the DOF on a node outside the set, or −1
+  /// The set lies on one side of the middle of the model's extent and moves toward the other.
+  bool toward = false;
+};
 
-std::vector<MotionMisfit> boundary_motion_warnings(const Model& m) {
-  std::vector<MotionMisfit> out;
-  if (m.X.empty()) return out;
+/// Calls `f` for each nonzero value of a translational DOF of a boundary in a forward step.
+void for_each_motion(const Model& m, const std::function<void(const Motion&)>& f) {
+  if (m.X.empty()) return;
   const int dim = m.dofs_per_node();
-  const bool axisymmetric = dim != 3;
   Eigen::Vector3d lo = m.X.front(), hi = lo;
   for (const Eigen::Vector3d& x : m.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-  const double size = (hi - lo).norm();
-  if (!(size > 0)) return out;
-  const double tol = 1e-9 * size;
-  const std::string len = m.units.display_unit(Dimension::length);
-  const auto in_len = [&](double x) { return m.units.from_internal(x, len, Dimension::length); };
+  if (!((hi - lo).norm() > 0)) return;
   // Per DOF, the nodes some boundary holds in it, and by which boundary (the first).
   std::vector<std::vector<int>> held_by(dim, std::vector<int>(m.num_nodes(), -1));
   for (int b = 0; b < static_cast<int>(m.boundaries.size()); ++b)
@@ -46,58 +52,75 @@ std::vector<MotionMisfit> boundary_motion_warnings(const Model& m) {
       const Boundary& bc = m.boundaries[b];
       const auto target = step.targets.find(bc.name);
       if (target == step.targets.end() || !std::isfinite(target->second) || target->second == 0) continue;
-      const double u = target->second;
       const NodeSet& set = m.node_sets[bc.node_set];
       if (set.nodes.empty()) continue;
       std::vector<char> in_set(m.num_nodes(), 0);
       for (int n : set.nodes) in_set[n] = 1;
       for (int d : bc.dofs) {
         if (d >= dim) continue;
-        double slo = std::numeric_limits<double>::infinity(), shi = -slo;
-        int nlo = set.nodes.front();
+        Motion mo{s, b, d, target->second};
+        mo.slo = std::numeric_limits<double>::infinity(), mo.shi = -mo.slo;
         for (int n : set.nodes) {
-          if (m.X[n](d) < slo) slo = m.X[n](d), nlo = n;
-          shi = std::max(shi, m.X[n](d));
+          if (m.X[n](d) < mo.slo) mo.slo = m.X[n](d), mo.nlo = n;
+          mo.shi = std::max(mo.shi, m.X[n](d));
         }
-        const std::string value = fmt::format("{:.4g} {}", in_len(u), len);
-        if (axisymmetric && d == 0) {
-          if (slo + u < -tol)
-            out.push_back({s, b,
-                           fmt::format("boundary '{}' moves r of node set '{}' by {} in step '{}', which puts {} (at "
-                                       "r = {:.4g} {}) at r = {:.4g} {}, across the axis: a boundary value is the "
-                                       "displacement from the reference (user guide §3.1), not the position. Check "
-                                       "the value, its sign and its unit",
-                                       bc.name, set.name, value, step.name, node_label(m, nlo), in_len(slo), len,
-                                       in_len(slo + u), len)});
-          continue;
-        }
-        // Toward the other side, past all of the model's extent in d.
-        const double mid = 0.5 * (lo(d) + hi(d));
-        const bool from_high = u < 0 && 0.5 * (slo + shi) > mid && shi + u < lo(d) - tol;
-        const bool from_low = u > 0 && 0.5 * (slo + shi) < mid && slo + u > hi(d) + tol;
-        if (!from_high && !from_low) continue;
-        int other = -1;  // a boundary that holds d on a node outside the set
-        for (int n = 0; n < m.num_nodes() && other < 0; ++n)
-          if (!in_set[n] && held_by[d][n] >= 0) other = held_by[d][n];
-        if (other < 0) continue;  // nothing holds the rest: the model translates
-        const char* dn = dof_name(m, d);
-        // "z = 10 mm" for a set on one plane, "z = 9.5 to 10 mm" for a set that spans a range.
-        const auto span = [&](double a, double b) {
-          return std::abs(b - a) <= tol ? fmt::format("{} = {:.4g} {}", dn, in_len(a), len)
-                                        : fmt::format("{} = {:.4g} to {:.4g} {}", dn, in_len(a), in_len(b), len);
-        };
-        out.push_back(
-            {s, b,
-             fmt::format("boundary '{}' moves {} of node set '{}' (at {}) by {} in step '{}', to {}: past the whole "
-                         "model, whose nodes span {}, while boundary '{}' holds {} on the other side, so the wall "
-                         "between them would have to pass through itself (Newton then converges to crushed states or "
-                         "stops at an everted surface). A boundary value is the displacement from the reference (user "
-                         "guide §3.1), not the position: check the value, its sign and its unit",
-                         bc.name, dn, set.name, span(slo, shi), value, step.name, span(slo + u, shi + u),
-                         span(lo(d), hi(d)), m.boundaries[other].name, dn)});
+        mo.lo = lo(d), mo.hi = hi(d);
+        for (int n = 0; n < m.num_nodes() && mo.other < 0; ++n)
+          if (!in_set[n] && held_by[d][n] >= 0) mo.other = held_by[d][n];
+        const double mid = 0.5 * (mo.lo + mo.hi), centre = 0.5 * (mo.slo + mo.shi);
+        mo.toward = (mo.u < 0 && centre > mid) || (mo.u > 0 && centre < mid);
+        f(mo);
       }
     }
   }
+}
+
+}  // namespace
+
+std::vector<MotionMisfit> boundary_motion_warnings(const Model& m) {
+  std::vector<MotionMisfit> out;
+  if (m.X.empty()) return out;
+  Eigen::Vector3d lo = m.X.front(), hi = lo;
+  for (const Eigen::Vector3d& x : m.X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const double tol = 1e-9 * (hi - lo).norm();
+  const bool axisymmetric = m.dofs_per_node() != 3;
+  const std::string len = m.units.display_unit(Dimension::length);
+  const auto in_len = [&](double x) { return m.units.from_internal(x, len, Dimension::length); };
+  for_each_motion(m, [&](const Motion& mo) {
+    const Boundary& bc = m.boundaries[mo.boundary];
+    const std::string& set = m.node_sets[bc.node_set].name;
+    const std::string& step = m.steps[mo.step].name;
+    const std::string value = fmt::format("{:.4g} {}", in_len(mo.u), len);
+    if (axisymmetric && mo.dof == 0) {
+      if (mo.slo + mo.u < -tol)
+        out.push_back({mo.step, mo.boundary,
+                       fmt::format("boundary '{}' moves r of node set '{}' by {} in step '{}', which puts {} (at r = "
+                                   "{:.4g} {}) at r = {:.4g} {}, across the axis: a boundary value is the displacement "
+                                   "from the reference (user guide §3.1), not the position. Check the value, its sign "
+                                   "and its unit",
+                                   bc.name, set, value, step, node_label(m, mo.nlo), in_len(mo.slo), len,
+                                   in_len(mo.slo + mo.u), len)});
+      return;
+    }
+    // Toward the other side, past all of the model's extent in the DOF, against another boundary.
+    const bool past = mo.u < 0 ? mo.shi + mo.u < mo.lo - tol : mo.slo + mo.u > mo.hi + tol;
+    if (!mo.toward || !past || mo.other < 0) return;
+    const char* dn = dof_name(m, mo.dof);
+    // "z = 10 mm" for a set on one plane, "z = 9.5 to 10 mm" for a set that spans a range.
+    const auto span = [&](double a, double b) {
+      return std::abs(b - a) <= tol ? fmt::format("{} = {:.4g} {}", dn, in_len(a), len)
+                                    : fmt::format("{} = {:.4g} to {:.4g} {}", dn, in_len(a), in_len(b), len);
+    };
+    out.push_back(
+        {mo.step, mo.boundary,
+         fmt::format("boundary '{}' moves {} of node set '{}' (at {}) by {} in step '{}', to {}: past the whole model, "
+                     "whose nodes span {}, while boundary '{}' holds {} on the other side, so the wall between them "
+                     "would have to pass through itself (Newton then converges to crushed states or stops at an "
+                     "everted surface). A boundary value is the displacement from the reference (user guide §3.1), "
+                     "not the position: check the value, its sign and its unit",
+                     bc.name, dn, set, span(mo.slo, mo.shi), value, step, span(mo.slo + mo.u, mo.shi + mo.u),
+                     span(mo.lo, mo.hi), m.boundaries[mo.other].name, dn)});
+  });
   return out;
 }
 
@@ -105,6 +128,20 @@ std::string boundary_motion_hint(const Model& m, int step) {
   std::string out;
   for (const MotionMisfit& w : boundary_motion_warnings(m))
     if (w.step == step) out += (out.empty() ? "" : " ") + w.message + ".";
+  return out;
+}
+
+std::string shortening_motions(const Model& m, int step) {
+  std::string out;
+  const bool axisymmetric = m.dofs_per_node() != 3;
+  const std::string len = m.units.display_unit(Dimension::length);
+  for_each_motion(m, [&](const Motion& mo) {
+    if (mo.step != step || !mo.toward || mo.other < 0 || (axisymmetric && mo.dof == 0) || !(mo.hi > mo.lo)) return;
+    out += fmt::format("{}boundary '{}' moves {} by {:.4g} {} toward boundary '{}', {:.3g} % of the model's extent in {}",
+                       out.empty() ? "" : "; ", m.boundaries[mo.boundary].name, dof_name(m, mo.dof),
+                       m.units.from_internal(mo.u, len, Dimension::length), len, m.boundaries[mo.other].name,
+                       100 * std::abs(mo.u) / (mo.hi - mo.lo), dof_name(m, mo.dof));
+  });
   return out;
 }
 

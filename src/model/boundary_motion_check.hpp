@@ -30,4 +30,10 @@ std::vector<MotionMisfit> boundary_motion_warnings(const Model& m);
 /// The misfits of step `step` (0-based) alone, as one sentence each, for a failure's hint.
 std::string boundary_motion_hint(const Model& m, int step);
 
+/// The values of step `step` (0-based) that move a node set toward the other side of the model
+/// where another boundary holds the same DOF (axial DOFs; not r): they shorten the wall between.
+/// "" if none, else each as "boundary 'e2' moves z by -2 mm toward boundary 'e1', 10 % of the
+/// model's extent in z", joined by "; ".
+std::string shortening_motions(const Model& m, int step);
+
 }  // namespace tunica

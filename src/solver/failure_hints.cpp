@@ -201,7 +201,20 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   bool linear_triangles = false;  // a part meshed with 3-node triangles: 6-node ones are a way out
   for (const Part& part : model.parts)
     for (const ElementBlock& b : part.blocks) linear_triangles = linear_triangles || b.kind == ElementKind::tri3;
-  if (slack)
+  // A step that shortens the wall: compression, which a membrane does not carry (it wrinkles).
+  const std::string shortening =
+      slack && &step >= &model.steps.front() && &step <= &model.steps.back()
+          ? shortening_motions(model, static_cast<int>(&step - &model.steps.front()))
+          : std::string();
+  if (slack && !shortening.empty())
+    add(fmt::format(
+        "step '{}' shortens the wall with no pressure on it ({}): a membrane carries no compression, it wrinkles or "
+        "buckles (user guide §5, compression), and Newton finds no path through such a state. Apply a pressure "
+        "together with the shortening (e.g. `{}: 10 mmHg` in this step's `set`), whose tension takes up the "
+        "compression as long as it exceeds it (the run notes any compression left, `compressed_fraction`), or "
+        "shorten it less; no iteration limit or increment size gets the step past without it.",
+        step.name, shortening, model.loads.front().name));
+  else if (slack)
     add(fmt::format(
         "step '{}' moves the membrane with no pressure on it: a closed or curved 3-D membrane without pressure carries "
         "no tension across the stretch and has no stiffness against ovalizing (neutral stability, user guide §3.1), so "

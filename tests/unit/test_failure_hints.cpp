@@ -574,4 +574,39 @@ steps:
   const std::string h =
       failure_hints(m, m.steps[0], failed("no convergence in 12 iterations", 1e-5), none, trying(0.0));
   EXPECT_NE(h.find("only the pressure (or 6-node triangles, `Mesh.ElementOrder = 2`)"), std::string::npos) << h;
+  EXPECT_EQ(h.find("shortens"), std::string::npos) << h;
+}
+
+TEST(FailureHints, AShorteningWithoutPressureOnA3dMembraneSaysItCompressesTheWall) {
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  artery: {type: neo_hookean, mu: 30 kPa}
+parts:
+  wall: {element: membrane, material: artery, thickness: 0.3 mm, mesh: {type: tube, radius: 2 mm, length: 4 mm, around: 16, along: 2}}
+boundary:
+  sym_x: {node_set: wall.x0, dofs: [x]}
+  sym_y: {node_set: wall.y0, dofs: [y]}
+  base: {node_set: wall.bottom, dofs: [z]}
+  stretch: {node_set: wall.top, dofs: [z]}
+loads:
+  blood: {type: pressure, part: wall}
+steps:
+  - {name: shorten, increments: 4, set: {stretch: -0.4 mm}}
+)";
+  const StepTrace none = along({{0.0, 1.0}, {0.0, 1.0}});
+  const Model m = read_deck_text(deck, "tube.yaml");
+  const std::string h =
+      failure_hints(m, m.steps[0], failed("no convergence in 12 iterations", 1e-5), none, trying(0.0));
+  EXPECT_NE(h.find("step 'shorten' shortens the wall with no pressure on it (boundary 'stretch' moves z by -0.4 mm "
+                   "toward boundary 'base', 10 % of the model's extent in z): a membrane carries no compression"),
+            std::string::npos)
+      << h;
+  // The base moved down is a stretch, and so is the top moved up.
+  for (const char* stretch : {"set: {base: -0.4 mm}", "set: {stretch: 0.4 mm}"}) {
+    const Model s = read_deck_text(replace_first(deck, "set: {stretch: -0.4 mm}", stretch), "tube.yaml");
+    const std::string hs =
+        failure_hints(s, s.steps[0], failed("no convergence in 12 iterations", 1e-5), none, trying(0.0));
+    EXPECT_EQ(hs.find("shortens"), std::string::npos) << hs;
+    EXPECT_NE(hs.find("moves the membrane with no pressure on it"), std::string::npos) << hs;
+  }
 }
