@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/printable.hpp"
+#include "io/yaml_indentation.hpp"
 
 namespace tunica {
 
@@ -235,10 +236,14 @@ InputError yaml_syntax_error(const YAML::Exception& e, const std::string& text, 
         break;
       }
   } else if (e.msg == "illegal flow end" && line > 0) {
-    cause = flow_end_cause(text, line, column);  } else if (e.msg == "illegal map value" && line > 0) {
+    cause = flow_end_cause(text, line, column);
+  } else if (e.msg == "illegal map value" && line > 0) {
     cause = colon_in_value_cause(text, line, column);
   }
   if (cause.empty() && line > 0) cause = quote_in_quoted_value_cause(text, line);
+  if (cause.empty() && line > 0 &&
+      (e.msg == "end of map not found" || e.msg == "end of sequence not found" || e.msg == "illegal map value"))
+    cause = indentation_cause(text, line);
   return InputError({file, line, column, ""}, "YAML syntax error: " + e.msg + cause);
 }
 

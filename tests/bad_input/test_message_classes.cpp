@@ -94,6 +94,33 @@ TEST(MessageClasses, TabInTheIndentation) {
   EXPECT_SAYS(o, "tab.yaml:" + std::to_string(line_of(read_text(kExample), "    a1: 0.68238")) + ":1:");
 }
 
+TEST(MessageClasses, AnEntryIndentedOffItsSiblingsSaysWhichIndentationMakesItOne) {
+  // yaml-cpp says only "end of map not found" or "illegal map value" at the line.
+  const std::string text = read_text(kExample);
+  const std::string line = std::to_string(line_of(text, "  stretch: {node_set"));
+  const std::string base = std::to_string(line_of(text, "  base:    {node_set"));
+  const std::string boundary = std::to_string(line_of(text, "boundary:"));
+  // One space deeper than its sibling, which already has its value.
+  expect_deck_message("indent-deeper", "  stretch: {node_set", "   stretch: {node_set", "   stretch: {node_set", "",
+                      "YAML syntax error: end of map not found (line " + line +
+                          " is indented by 3 space(s), deeper than line " + base + " ('base'), which already has its "
+                          "value and holds nothing below it",
+                      "indent it by 2 space(s), as line " + base + " ('base') is, to make it another entry of "
+                      "'boundary' (line " + boundary + ")");
+  // Between two levels: both are named.
+  expect_deck_message("indent-between", "  stretch: {node_set", " stretch: {node_set", " stretch: {node_set", "",
+                      "line " + line + " is indented by 1 space(s), which matches no level of the lines above it",
+                      "indent it by 2 space(s), as line " + base + " ('base') is, to make it another entry of "
+                      "'boundary' (line " + boundary + "), or by 0 space(s), as line " + boundary +
+                          " ('boundary') is, to make it another entry of the deck's top level");
+  // A key of a material two spaces too deep, under a key with a value.
+  const std::string a2 = std::to_string(line_of(text, "    a2: 0.60558"));
+  const std::string a1 = std::to_string(line_of(text, "    a1: 0.68238"));
+  expect_deck_message("indent-under-value", "    a2: 0.60558", "      a2: 0.60558", "      a2: 0.60558", "",
+                      "line " + a2 + " is indented by 6 space(s), deeper than line " + a1 + " ('a1')",
+                      "indent it by 4 space(s), as line " + a1 + " ('a1') is, to make it another entry of 'aorta'");
+}
+
 TEST(MessageClasses, AClosingBracketOfTheWrongKindSaysWhichClosesThere) {
   // yaml-cpp says only "illegal flow end".
   const std::string text = read_text(kExample);
