@@ -76,7 +76,17 @@ std::string nearest_name(std::string_view name, const std::vector<std::string>& 
     const long d = typo_distance(low, lower(k));
     if (d >= 0 && (best_d < 0 || d < best_d)) best = k, best_d = d;
   }
-  return best;
+  if (!best.empty() || low.find('.') != std::string::npos) return best;
+  // A name without its prefix (`start` for a part's `wall.start`): the one known name that ends in
+  // it after a dot, if only one does.
+  int count = 0;
+  for (const auto& k : known) {
+    const std::string lk = lower(k);
+    if (lk.size() > low.size() + 1 && lk.compare(lk.size() - low.size(), low.size(), low) == 0 &&
+        lk[lk.size() - low.size() - 1] == '.')
+      best = k, ++count;
+  }
+  return count == 1 ? best : "";
 }
 
 namespace {

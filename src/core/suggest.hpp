@@ -12,7 +12,9 @@ namespace tunica {
 /// 5 characters, 2 for longer ones, and fewer edits than the name has characters; a name
 /// differing only in letter case always is. Names that share a prefix up to a dot (the node sets
 /// of one part, `wall.x0` and `wall.y0`) are compared by the rest, with the rule of
-/// nearest_file_name's stems: `wall.y0` is not offered for `wall.x0`. "" if none is.
+/// nearest_file_name's stems: `wall.y0` is not offered for `wall.x0`. A name without a dot that no
+/// typo matches is offered the one known name that ends in it after a dot (`wall.start` for
+/// `start`), if only one does. "" if none is.
 std::string nearest_name(std::string_view name, const std::vector<std::string>& known);
 
 /// The file name in `files` that `name` (a file name without folder) is likely a typo of, or ""

@@ -27,6 +27,7 @@
 #include "io/deck_surface_parts.hpp"
 #include "io/inverse_step_checks.hpp"
 #include "io/unitless_values.hpp"
+#include "io/unit_advice.hpp"
 #include "io/yaml_syntax.hpp"
 #include "model/axis_pole_check.hpp"
 #include "model/boundary_motion_check.hpp"
@@ -859,8 +860,22 @@ void read_output(const DeckNode& deck, Model& m) {
                              ? "'" + r.quantity + "' is a 3-D quantity; axisymmetric nodes have r and z"
                              : "'" + r.quantity + "' is an axisymmetric quantity; 3-D nodes have x, y and z");
     for (const char* key : {"part", "node_set", "load", "contact"}) {
-      if (h.has(key) && target != key)
-        h.fail(key, fmt::format("quantity '{}' takes {}", r.quantity, target.empty() ? "no set" : with_article(target)));
+      if (h.has(key) && target != key) {
+        // A node set given to a quantity of a part: the quantities of a node set's nodes.
+        std::string of_nodes;
+        if (std::string(key) == "node_set") {
+          for (const auto& x : history_quantities())
+            if (x.target == QuantityTarget::node_set && (!x.geometry || *x.geometry == m.geometry))
+              of_nodes += (of_nodes.empty() ? "" : ", ") + x.name;
+          of_nodes = fmt::format(
+              "; the quantities of a node set's nodes are {}{}", of_nodes,
+              r.quantity == "radius" && m.geometry == Geometry::axisymmetric
+                  ? " (the radius of its nodes is `position_r`, with `reduce: mean|min|max`)"
+                  : "");
+        }
+        h.fail(key, fmt::format("quantity '{}' takes {}{}", r.quantity,
+                                target.empty() ? "no set" : with_article(target), of_nodes));
+      }
     }
     if (!target.empty() && !h.has(target))
       h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, target));
@@ -925,7 +940,14 @@ void read_output(const DeckNode& deck, Model& m) {
       try {
         m.units.check_unit(r.unit, r.dim);
       } catch (const std::invalid_argument& e) {
-        h.fail("unit", e.what());
+        // A unit of another dimension says so; an unknown one gets the common units of the
+        // quantity's dimension, and the nearest (`kPa` for `kpa`: symbols are case-sensitive).
+        const std::string why = e.what();
+        h.fail("unit", why.rfind("unknown unit", 0) == 0
+                           ? fmt::format("{} {}", why,
+                                         known_names(r.unit, common_units(r.dim),
+                                                     fmt::format("common units of {}", dimension_name(r.dim))))
+                           : why);
       }
       suffix = unit_suffix(m.units, r.dim, h.has("unit") ? r.unit : "");
     } else if (h.has("unit")) {

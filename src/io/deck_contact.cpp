@@ -8,6 +8,7 @@
 #include "contact/axisym_contact.hpp"
 #include "io/deck_names.hpp"
 #include "io/rigid_contact_side.hpp"
+#include "io/unitless_values.hpp"
 #include "contact/contact_search.hpp"
 
 namespace tunica {
@@ -326,6 +327,7 @@ void read_contacts(const DeckNode& deck, Model& m) {
     sec.fail("expected a map of contact pairs (name: {slave: ..., rigid: ... or master: ..., penalty: ...})");
   for (const auto& [name, node] : sec.entries()) {
     const Params p = read_params(node, contact_spec(), m.units);
+    warn_unitless_values(node, contact_spec(), m);
     ContactPair c;
     c.name = name;
     c.where = node.where();

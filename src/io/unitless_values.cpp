@@ -9,11 +9,20 @@
 namespace tunica {
 
 bool warn_if_unitless(const DeckNode& v, Dimension dim, Model& m, bool load_target) {
-  if (dim != Dimension::pressure && dim != Dimension::angle) return false;
+  if (dim != Dimension::pressure && dim != Dimension::angle && dim != Dimension::penalty) return false;
   double written = 0;
   std::string unit;
   if (!v.is_scalar() || !split_quantity(v.as_string(), written, unit) || !unit.empty() || written == 0) return false;
   const std::string& w = v.as_string();
+  if (dim == Dimension::penalty) {
+    // A pressure per length: its unit follows both the force and the length unit of the deck.
+    const std::string deck_unit = m.units.display_unit(Dimension::penalty);
+    m.warnings.push_back(format_location(
+        v.where(), fmt::format("{} has no unit and is taken in the deck's unit of a penalty (contact pressure per unit "
+                               "penetration), {}; write the unit to be sure, e.g. `{} {}` (this value)",
+                               w, deck_unit, w, deck_unit)));
+    return true;
+  }
   if (dim == Dimension::angle) {
     m.warnings.push_back(format_location(
         v.where(), fmt::format("{} has no unit and is read in radians ({} rad = {:.4g} deg); write the unit to be sure, "
@@ -62,7 +71,9 @@ bool warn_if_gradians(const DeckNode& v, Model& m) {
 
 void warn_unitless_values(const DeckNode& node, const ComponentSpec& spec, Model& m) {
   for (const ParamSpec& p : spec.params) {
-    if ((p.dim != Dimension::pressure && p.dim != Dimension::angle) || !node.has(p.name)) continue;
+    if ((p.dim != Dimension::pressure && p.dim != Dimension::angle && p.dim != Dimension::penalty) ||
+        !node.has(p.name))
+      continue;
     const DeckNode given = node[p.name];
     const auto warn = [&](const DeckNode& v) {
       return warn_if_unitless(v, p.dim, m) || (p.dim == Dimension::angle && warn_if_gradians(v, m));

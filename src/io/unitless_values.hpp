@@ -5,7 +5,8 @@
 // is 57° (a bare angle out of its range, `beta: 40`, is an error that proposes `40 deg`). An
 // angle in gradians (UDUNITS-2's `grade`, 400 to a turn) is valid but rarely meant: said too.
 // Each warning names the line and key, says how the value was read and how to write it with
-// a unit; it goes to Model::warnings.
+// a unit; it goes to Model::warnings. A bare contact penalty is in the deck's force per length³, a
+// unit few write by heart: said too.
 #include "io/deck_node.hpp"
 #include "model/model.hpp"
 #include "params/param_spec.hpp"
@@ -13,7 +14,7 @@
 namespace tunica {
 
 /// Warns if `v` is a number other than 0 written without a unit for a value of dimension `dim`
-/// (pressure or angle; other dimensions are not warned about). `load_target`: a pressure a
+/// (pressure, angle or a contact penalty; other dimensions are not warned about). `load_target`: a pressure a
 /// step sets on a load, also given in mmHg. True if it warned.
 bool warn_if_unitless(const DeckNode& v, Dimension dim, Model& m, bool load_target = false);
 

@@ -30,13 +30,26 @@ std::vector<PoleMisfit> free_pole_warnings(const Model& m) {
           set = s.name;
           break;
         }
+      // A flat part from the axis (every node at one z): a disk, or a tube's points written [z, r].
+      double zlo = m.X[part.nodes.front()](1), zhi = zlo, rhi = 0;
+      for (int k : part.nodes) zlo = std::min(zlo, m.X[k](1)), zhi = std::max(zhi, m.X[k](1)), rhi = std::max(rhi, m.X[k](0));
+      std::string flat;
+      if (zhi - zlo <= 1e-9 * size) {
+        const std::string len = m.units.display_unit(Dimension::length);
+        const auto in_len = [&](double x) { return m.units.from_internal(x, len, Dimension::length); };
+        flat = fmt::format(
+            ". The part is a flat disk in the plane z = {:.4g} {} (points are [r, z], the radius first): if a tube "
+            "along the axis was meant, write each point the other way round ([{:.4g} {}, 0 {}] to [{:.4g} {}, {:.4g} {}])",
+            in_len(zlo), len, in_len(zlo), len, len, in_len(zlo), len, in_len(rhi), len);
+      }
       out.push_back({p, n,
                      fmt::format("{} lies on the axis (R = 0), a pole of part '{}', and no boundary condition holds "
                                  "its r: a membrane pole is free to leave the axis, which its neighbours barely "
                                  "resist, and it drifts off by round-off. Hold r there{}",
                                  node_label(m, n), part.name,
                                  set.empty() ? std::string(" (a node set of that node, `dofs: [r]`)")
-                                             : fmt::format(": `{{node_set: {}, dofs: [r]}}` in `boundary`", set))});
+                                             : fmt::format(": `{{node_set: {}, dofs: [r]}}` in `boundary`", set)) +
+                         flat});
     }
   }
   return out;

@@ -121,6 +121,30 @@ std::vector<MotionMisfit> boundary_motion_warnings(const Model& m) {
                      bc.name, dn, set, span(mo.slo, mo.shi), value, step, span(mo.slo + mo.u, mo.shi + mo.u),
                      span(mo.lo, mo.hi), m.boundaries[mo.other].name, dn)});
   });
+  // One value for several translational DOFs moves the set by it along each (diagonally).
+  for (int s = 0; s < static_cast<int>(m.steps.size()); ++s) {
+    if (m.steps[s].inverse) continue;
+    for (int b = 0; b < static_cast<int>(m.boundaries.size()); ++b) {
+      const Boundary& bc = m.boundaries[b];
+      const auto target = m.steps[s].targets.find(bc.name);
+      if (target == m.steps[s].targets.end() || target->second == 0 || !std::isfinite(target->second)) continue;
+      std::vector<std::string> moved;
+      for (int d : bc.dofs)
+        if (d < m.dofs_per_node()) moved.push_back(dof_name(m, d));
+      if (moved.size() < 2) continue;
+      std::string list;
+      for (std::size_t k = 0; k < moved.size(); ++k)
+        list += (k == 0 ? "" : k + 1 == moved.size() ? " and " : ", ") + moved[k];
+      out.push_back({s, b,
+                     fmt::format("boundary '{}' names {} and step '{}' sets it to {:.4g} {}: a boundary value moves "
+                                 "every DOF the boundary names by it, so node set '{}' moves by {:.4g} {} along each "
+                                 "of {}. To move it along one only, hold the others in a boundary of their own (e.g. "
+                                 "`{}_hold: {{node_set: {}, dofs: [{}]}}`) and name only the moving DOF in '{}'",
+                                 bc.name, list, m.steps[s].name, in_len(target->second), len,
+                                 m.node_sets[bc.node_set].name, in_len(target->second), len, list, bc.name,
+                                 m.node_sets[bc.node_set].name, moved.front(), bc.name)});
+    }
+  }
   return out;
 }
 

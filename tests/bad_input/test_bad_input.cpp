@@ -660,3 +660,52 @@ TEST(BadInput, ANumberBeyondADoubleIsTooLargeNotNoNumber) {
   expect_error("huge", "c: 61.163 kPa", "c: 1e400 kPa", "materials.aorta.c",
                "the number in '1e400 kPa' is too large for any value (beyond 1.8e308)");
 }
+
+TEST(BadInput, AnOutputUnitOfTheWrongCaseAndANodeSetForAPartsQuantityNameTheFix) {
+  // Unit symbols are case-sensitive (UDUNITS-2): `kpa` gets the common units and the nearest.
+  expect_error("output-unit-case", "    - {quantity: pressure, load: lumen, unit: mmHg}",
+               "    - {quantity: pressure, load: lumen, unit: kpa}", "output.history[0].unit",
+               "unknown unit 'kpa' (the common units of pressure (stress) are: Pa, kPa, MPa");
+  expect_error("output-unit-case-2", "    - {quantity: pressure, load: lumen, unit: mmHg}",
+               "    - {quantity: pressure, load: lumen, unit: kpa}", "output.history[0].unit", "did you mean 'kPa'?");
+  // The radius of a node set's nodes is a node quantity.
+  expect_error("radius-of-a-node-set", "    - {quantity: radius, part: wall, unit: mm}",
+               "    - {quantity: radius, node_set: wall.end, unit: mm}", "output.history[7].node_set",
+               "quantity 'radius' takes a part; the quantities of a node set's nodes are position_r, position_z");
+  expect_error("radius-of-a-node-set-2", "    - {quantity: radius, part: wall, unit: mm}",
+               "    - {quantity: radius, node_set: wall.end, unit: mm}", "output.history[7].node_set",
+               "(the radius of its nodes is `position_r`, with `reduce: mean|min|max`)");
+  // A part's set named without the part.
+  expect_error("node-set-without-its-part", "stretch: {node_set: wall.end,", "stretch: {node_set: end,",
+               "boundary.stretch.node_set", "undefined node set 'end' (the node sets are: wall.start, wall.end, "
+               "wall.all; did you mean 'wall.end'?)");
+}
+
+TEST(BadInput, AContactPenaltyWithoutAUnitIsValidButSaid) {
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  mr: {type: mooney_rivlin, b1: 0.5 MPa, b2: 0.1 MPa}
+parts:
+  tube: {element: axisymmetric_membrane, material: mr, thickness: 0.1 mm, mesh: {type: line, from: [1 mm, 0 mm], to: [1 mm, 2 mm], elements: 4}}
+boundary:
+  ends: {node_set: tube.all, dofs: [z]}
+rigid_surfaces:
+  sleeve: {type: cylinder, radius: 1.3 mm, side: inside}
+contact:
+  tube_sleeve: {slave: tube, rigid: sleeve, penalty: 1000}
+loads:
+  p: {type: pressure, part: tube}
+steps:
+  - {increments: 4, set: {p: 50 kPa}}
+)";
+  const Outcome o = run_cli("check " + write_deck("penalty-no-unit", deck));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find(":11:54: key 'contact.tube_sleeve.penalty': 1000 has no unit and is taken in the deck's unit "
+                          "of a penalty (contact pressure per unit penetration), N/mm³; write the unit to be sure, e.g. "
+                          "`1000 N/mm³` (this value)"),
+            std::string::npos)
+      << o.output;
+  const Outcome ok = run_cli("check " + write_deck("penalty-unit", replace(deck, "penalty: 1000}", "penalty: 1000 N/mm^3}")));
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_EQ(ok.output.find("has no unit"), std::string::npos) << ok.output;
+}

@@ -232,7 +232,7 @@ TEST(RigidContactDeck, AssembledTangentWithContactMatchesFiniteDifferences) {
 
 TEST(RigidContactDeck, PenetrationFarBeyondThePenaltysScaleIsWarnedOnceAtThePair) {
   // ε = 0.05 N/mm³ leaves p_c/ε ≈ 0.004/0.05 = 0.08 mm, more than half the 0.125 mm elements.
-  const std::string soft = replace(kTube, "PENALTY", "0.05");
+  const std::string soft = replace(kTube, "PENALTY", "0.05 N/mm^3");
   const std::string deck = write_deck_file("tunica-rigid-contact", "soft-penalty", soft);
   const std::string out = (std::filesystem::temp_directory_path() / "tunica-rigid-contact" / "soft-out").string();
   const Outcome o = run_cli("run " + deck + " -q -o " + out);

@@ -37,3 +37,29 @@ TEST(AxisPoleCheck, AHeldPoleAndATubeAreNot) {
   const std::string tube = std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml";
   EXPECT_TRUE(pole_warnings(read_deck_text(read_text(tube), tube)).empty());
 }
+
+TEST(AxisPoleCheck, AFlatPartFromTheAxisSaysPointsAreRadiusFirst) {
+  // A tube's points written [z, r]: a flat disk at z = 3 from the axis out to r = 10.
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  m: {type: neo_hookean, mu: 30 kPa}
+parts:
+  wall: {element: axisymmetric_membrane, material: m, thickness: 0.5 mm, mesh: {type: line, from: [0 mm, 3 mm], to: [10 mm, 3 mm], elements: 10}}
+boundary:
+  base: {node_set: wall.start, dofs: [z]}
+  pull: {node_set: wall.end, dofs: [z]}
+loads:
+  lumen: {type: pressure, part: wall}
+steps:
+  - {increments: 5, set: {lumen: 10 mmHg}}
+)";
+  const std::vector<std::string> w = pole_warnings(read_deck_text(deck, "disk.yaml"));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("The part is a flat disk in the plane z = 3 mm (points are [r, z], the radius first): if a tube "
+                      "along the axis was meant, write each point the other way round ([3 mm, 0 mm] to [3 mm, 10 mm])"),
+            std::string::npos)
+      << w[0];
+  // The sphere's pole is on a curved meridian: no such note.
+  const std::string text = replace(read_text(kSphere), "  pole:    {node_set: balloon.end, dofs: [r]}\n", "");
+  EXPECT_EQ(pole_warnings(read_deck_text(text, kSphere))[0].find("flat disk"), std::string::npos);
+}

@@ -38,7 +38,8 @@ steps:
 std::vector<std::string> motion_warnings(const Model& m) {
   std::vector<std::string> out;
   for (const std::string& w : m.warnings)
-    if (w.find("past the whole model") != std::string::npos || w.find("across the axis") != std::string::npos)
+    if (w.find("past the whole model") != std::string::npos || w.find("across the axis") != std::string::npos ||
+        w.find("every DOF the boundary names") != std::string::npos)
       out.push_back(w);
   return out;
 }
@@ -118,4 +119,18 @@ TEST(BoundaryMotionCheck, TheEversionOfAStepWithNoPressureNamesTheBoundaryNotALi
   // The inflation step raises the pressure: the limit point stays the likely cause.
   const std::string p = eversion_hint(shorter, 0, shorter.steps[1], 1, start);
   EXPECT_NE(p.find("limit point"), std::string::npos) << p;
+}
+
+TEST(BoundaryMotionCheck, OneValueForTwoDofsIsSaidToMoveAlongEach) {
+  const std::string deck =
+      replace(kTube, "pull: {node_set: wall.end, dofs: [z]}", "pull: {node_set: wall.end, dofs: [r, z]}");
+  const std::vector<std::string> w = motion_warnings(read_deck_text(replace(deck, "pull: -12 mm", "pull: 1 mm"), "t.yaml"));
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("boundary 'pull' names r and z and step 'prestretch' sets it to 1 mm: a boundary value moves every "
+                      "DOF the boundary names by it, so node set 'wall.end' moves by 1 mm along each of r and z"),
+            std::string::npos)
+      << w[0];
+  EXPECT_NE(w[0].find("`pull_hold: {node_set: wall.end, dofs: [r]}`"), std::string::npos) << w[0];
+  // A clamp (no value, or 0) is no such motion.
+  EXPECT_TRUE(motion_warnings(read_deck_text(replace(deck, "set: {pull: -12 mm}", "set: {pull: 0 mm}"), "t.yaml")).empty());
 }

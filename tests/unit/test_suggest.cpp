@@ -35,6 +35,11 @@ TEST(Suggest, TheSetsOfAPartAreOfferedOnlyForATypoOfTheSetsName) {
   EXPECT_EQ(nearest_name("wall.botom", sets), "wall.bottom");
   EXPECT_EQ(nearest_name("wall.Y0", sets), "wall.y0");        // letter case
   EXPECT_EQ(nearest_name("wal.top", sets), "wall.top");       // a typo in the part's name
+  // A set's name without its part: the one set that ends in it, and none where two parts have it.
+  EXPECT_EQ(nearest_name("start", sets), "wall.start");
+  EXPECT_EQ(nearest_name("START", sets), "wall.start");
+  EXPECT_EQ(nearest_name("start", {"wall.start", "cap.start"}), "");
+  EXPECT_EQ(nearest_name("art", sets), "");  // not after a dot
   // Names without a dot keep their rule.
   EXPECT_EQ(nearest_name("lumne", {"lumen"}), "lumen");
   EXPECT_EQ(nearest_name("mn", {"mm", "cm"}), "mm");
