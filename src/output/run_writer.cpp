@@ -11,6 +11,7 @@
 #include "assembly/contact_penetration.hpp"
 #include "core/printable.hpp"
 #include "elements/membrane_compression.hpp"
+#include "output/jump_notes.hpp"
 #include "linalg/compute_threads.hpp"
 #include "output/atomic_file.hpp"
 #include "output/history.hpp"
@@ -212,6 +213,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   if (last_framed_) write_frame(analysis, info);
   note_compression(analysis, info);
   note_penetration(analysis, info);
+  note_jumps(analysis, info);
   // The end of an inverse step: its zero-pressure geometry (reference_mesh.hpp), written before the
   // steps after it continue on it as their reference (Analysis): the deck's positions and its unknowns.
   if (info.step > 0 && info.fraction >= 1.0 - 1e-12 && model_.steps[info.step - 1].moves_reference())
@@ -269,6 +271,31 @@ void RunWriter::note_compression(const Analysis& analysis, const IncrementInfo& 
                  "where.\n",
                  terminal_safe(part.name).c_str(), 100 * f, info.step, terminal_safe(info.step_name).c_str(),
                  info.increment, terminal_safe(strength).c_str());
+  }
+}
+
+void RunWriter::note_jumps(const Analysis& analysis, const IncrementInfo& info) {
+  if (info.step == 0) return;
+  const std::string when = fmt::format("at step {} '{}', increment {}", info.step, info.step_name, info.increment);
+  jump_noted_.resize(model_.loads.size(), 0);
+  for (std::size_t l = 0; l < model_.loads.size(); ++l) {
+    if (jump_noted_[l]) continue;
+    const std::string note =
+        volume_jump_note(analysis.model(), static_cast<int>(l), info.step - 1, analysis.checkpoint().trace, when);
+    if (note.empty()) continue;
+    jump_noted_[l] = 1;
+    std::fprintf(stderr, "tunica: note: %s.\n", terminal_safe(note).c_str());
+  }
+  stretch_noted_.resize(model_.parts.size(), 0);
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    const Part& part = model_.parts[p];
+    if (stretch_noted_[p] || part.is_solid() || part.is_shell()) continue;
+    const std::vector<MembranePoint> points =
+        analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step);
+    const std::string note = extreme_stretch_note(analysis.model(), static_cast<int>(p), points, when);
+    if (note.empty()) continue;
+    stretch_noted_[p] = 1;
+    std::fprintf(stderr, "tunica: note: %s.\n", terminal_safe(note).c_str());
   }
 }
 

@@ -65,6 +65,10 @@ private:
   /// The first time a contact pair's penetration is far beyond the penalty's scale, a warning on
   /// standard error at the pair (assembly/contact_penetration.hpp), once per pair.
   void note_penetration(const Analysis& analysis, const IncrementInfo& info);
+  /// The first time a load's volume jumps onto a far branch of its curve, and the first time a
+  /// membrane part is stretched or crushed beyond what a membrane reaches: a note on standard
+  /// error (output/jump_notes.hpp), once per load and per part.
+  void note_jumps(const Analysis& analysis, const IncrementInfo& info);
 
   const Model& model_;
   std::string dir_;
@@ -81,6 +85,8 @@ private:
   bool last_framed_ = false;           ///< it has its ParaView frame
   std::vector<char> compression_noted_;  ///< per part
   std::vector<char> penetration_noted_;  ///< per contact pair
+  std::vector<char> jump_noted_;         ///< per load
+  std::vector<char> stretch_noted_;      ///< per part
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
 };
 
