@@ -40,7 +40,7 @@ std::string number_of(const std::string& written, const std::string& unit) {
 std::string unit_fix(const std::string& number, const std::string& unit, Dimension dim, const UnitSystem& units) {
   if (dim == Dimension::dimensionless) return "";
   std::string fix = nearest_name(unit, common_units(dim));
-  if (fix.empty()) fix = dim == Dimension::angle ? "deg" : dim == Dimension::pressure ? "kPa" : units.internal_unit(dim);
+  if (fix.empty()) fix = dim == Dimension::angle ? "deg" : dim == Dimension::pressure ? "kPa" : units.display_unit(dim);
   return fmt::format(", e.g. `{} {}`", number, fix);
 }
 

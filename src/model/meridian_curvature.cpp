@@ -16,7 +16,7 @@ std::vector<std::vector<double>> meridian_mean_curvature(const Model& model, con
   };
   for (std::size_t b = 0; b < part.blocks.size(); ++b) {
     const ElementBlock& block = part.blocks[b];
-    if (block.kind != ElementKind::axisym2) continue;
+    if (block.kind != ElementKind::axisym2 && block.kind != ElementKind::shell2) continue;  // a meridian of 2-node segments
     for (int e = 0; e < block.size(); ++e) {
       const int* en = block.element(e);
       out[en[0]] = {static_cast<int>(b), e};
@@ -39,7 +39,7 @@ std::vector<std::vector<double>> meridian_mean_curvature(const Model& model, con
   }
   for (std::size_t b = 0; b < part.blocks.size(); ++b) {
     const ElementBlock& block = part.blocks[b];
-    if (block.kind != ElementKind::axisym2) continue;
+    if (block.kind != ElementKind::axisym2 && block.kind != ElementKind::shell2) continue;  // a meridian of 2-node segments
     H[b].assign(block.size(), 0.0);
     for (int e = 0; e < block.size(); ++e) {
       const int* en = block.element(e);

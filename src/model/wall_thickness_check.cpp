@@ -16,7 +16,7 @@ std::vector<ThicknessMisfit> wall_thickness_misfits(const Model& m) {
   const auto in_unit = [&](double v) { return m.units.from_internal(v, unit, Dimension::length); };
   for (std::size_t p = 0; p < m.parts.size(); ++p) {
     const Part& part = m.parts[p];
-    if (part.is_solid() || part.is_shell() || !(part.thickness > 0)) continue;
+    if (part.is_solid() || !(part.thickness > 0)) continue;
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
     for (int n : part.nodes) {
       lo = lo.cwiseMin(m.X[n]);
@@ -54,12 +54,12 @@ std::vector<ThicknessMisfit> wall_thickness_misfits(const Model& m) {
     if (part.thickness > radius)
       out.push_back({static_cast<int>(p), false,
                      fmt::format("part '{}': the thickness {:.4g} {} is {:.2g} times the part's typical radius of "
-                                 "curvature, {:.4g} {} (a tube's radius; half a sphere's): a membrane model assumes "
+                                 "curvature, {:.4g} {} (a tube's radius; half a sphere's): a {} model assumes "
                                  "a wall thin against its radius (its error is of order H/2R) where it carries the "
                                  "load. Check the thickness and the mesh's length unit; a thick wall wants a solid "
                                  "model (`axisymmetric_solid`)",
                                  part.name, in_unit(part.thickness), unit, part.thickness / radius, in_unit(radius),
-                                 unit)});
+                                 unit, part.is_shell() ? "shell (Kirchhoff–Love)" : "membrane")});
   }
   return out;
 }

@@ -24,10 +24,11 @@ std::string volume_jump_note(const Model& m, int load, int step, const StepTrace
   return fmt::format(
       "{}, the enclosed volume of load '{}' grew {:.3g}-fold in one increment ({:.4g} to {:.4g} {}) while the pressure "
       "went from {:.4g} to {:.4g} kPa, {:.3g} times the volume per pressure of the increment before: the increment "
-      "jumped across a maximum of the pressure onto a far branch of the pressure–volume curve (a snap-through), and "
-      "the states between were skipped. A membrane under pressure control jumps so too; to follow the curve through "
-      "the maximum, control the volume (`volume_control: {{load: {}, volume: ...}}`, user guide §3.1), and if no such "
-      "jump was expected, check the load's value and unit",
+      "either jumped across a maximum of the pressure onto a far branch of the pressure–volume curve (a snap-through "
+      "of a material that stiffens, skipping the states between, as a membrane under pressure control does) or "
+      "climbed the steep end of a curve that approaches an asymptote (a tube at fixed length). Volume control "
+      "(`volume_control: {{load: {}, volume: ...}}`, user guide §3.1) follows the curve through either and shows "
+      "which; if no such growth was expected, check the load's value and unit",
       when, name, c.volume[l] / b.volume[l], v(b.volume[l]), v(c.volume[l]), vol, kpa(b.pressure[l]),
       kpa(c.pressure[l]), now / std::abs(before), name);
 }

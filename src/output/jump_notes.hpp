@@ -4,7 +4,9 @@
 // result without a word.
 //  - Under pressure control, an increment across a maximum of the pressure lands on a far branch
 //    of the pressure–volume curve (a snap-through: a stiffening material carries the pressure
-//    again at a much larger volume), skipping the states between (theory manual §7.1).
+//    again at a much larger volume), skipping the states between (theory manual §7.1); near an
+//    asymptote (a neo-Hookean tube at fixed length) the volume grows as steeply without a jump:
+//    the note names both.
 //  - A stretch far beyond what arteries and balloons reach, or a wall crushed to a fraction of
 //    its area: loads or boundary values (or their units) off.
 #include <string>

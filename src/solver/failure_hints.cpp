@@ -22,14 +22,18 @@ namespace {
 
 /// The bodies that nothing holds against rigid motion in step `step` (0-based; a body counts once
 /// one of its parts has entered), as the deck's warnings name them; empty if none.
-std::string free_body_hint(const Model& model, int step) {
+std::string free_body_hint(const Model& model, int step, bool singular = true) {
   std::string out;
   for (const UnheldBody& b : unheld_rigid_motions(model)) {
     bool active = false;
     for (int p : b.parts) active = active || model.part_active(p, step);
     if (active) out += (out.empty() ? "" : "; ") + b.message;
   }
-  return out.empty() ? out : "the tangent is singular because a body is free to move rigidly (as `tunica check` warns): " + out + ".";
+  if (out.empty()) return out;
+  return singular ? "the tangent is singular because a body is free to move rigidly (as `tunica check` warns): " + out + "."
+                  : "a body is free to move rigidly (as `tunica check` warns), so the tangent is singular or nearly so "
+                    "and Newton's corrections wander along the free motion whatever the iteration limit: " +
+                        out + ".";
 }
 
 /// A singular tangent of a model held against rigid motion, at a state Newton reached: no
@@ -351,6 +355,8 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   }
   if (!limit.empty()) return limit;
   // No limit point on the way, and a load far beyond what the wall carries: a value or unit mistyped.
+  // A body free to move rigidly fails this way too when the tangent is regular only by round-off.
+  if (const std::string free = free_body_hint(model, attempted.step, false); !free.empty()) return " Hint: " + free;
   if (std::string h = load_scale_hint(model, step); !h.empty()) return " Hint: " + h;
   if (std::string h = displacement_scale_hint(model, step); !h.empty()) return " Hint: " + h;
   if (still_converging && !slack) add(more_iterations);

@@ -63,3 +63,31 @@ steps:
   const std::string text = replace(read_text(kSphere), "  pole:    {node_set: balloon.end, dofs: [r]}\n", "");
   EXPECT_EQ(pole_warnings(read_deck_text(text, kSphere))[0].find("flat disk"), std::string::npos);
 }
+
+TEST(WallThicknessCheck, AShellThickerThanItsRadiusIsWarnedAboutAsAMembraneIs) {
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  art: {type: neo_hookean, mu: 100 kPa}
+parts:
+  wall: {element: axisymmetric_shell, material: art, thickness: 1.2 mm, mesh: {type: line, from: [1 mm, 0 mm], to: [1 mm, 4 mm], elements: 40}}
+node_sets:
+  ends: {part: wall, nodes: [0, 40]}
+boundary:
+  clamp: {node_set: ends, dofs: [r, z, slope_r]}
+loads:
+  p: {type: pressure, part: wall}
+steps:
+  - {increments: 5, set: {p: 1 kPa}}
+)";
+  const auto said = [](const Model& m) {
+    for (const std::string& w : m.warnings)
+      if (w.find("typical radius of curvature") != std::string::npos) return w;
+    return std::string();
+  };
+  const std::string w = said(read_deck_text(deck, "shell.yaml"));
+  EXPECT_NE(w.find("key 'parts.wall.thickness': part 'wall': the thickness 1.2 mm is 1.2 times the part's typical "
+                   "radius of curvature, 1 mm (a tube's radius; half a sphere's): a shell (Kirchhoff–Love) model"),
+            std::string::npos)
+      << w;
+  EXPECT_EQ(said(read_deck_text(replace(deck, "thickness: 1.2 mm", "thickness: 0.1 mm"), "shell.yaml")), "");
+}
