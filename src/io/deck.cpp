@@ -18,6 +18,7 @@
 #include "core/article.hpp"
 #include "core/bounded_file.hpp"
 #include "core/printable.hpp"
+#include "core/suggest.hpp"
 #include "io/deck_contact.hpp"
 #include "io/deck_limits.hpp"
 #include "io/deck_meridian_parts.hpp"
@@ -827,8 +828,9 @@ void read_output(const DeckNode& deck, Model& m) {
           item.fail(fmt::format("'{}': write the name without its unit suffix, '{}' (the frames add the unit)", name, base));
         std::string known;
         for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-        item.fail(fmt::format("'{}' is not an array of {} model's frames (names without the unit suffix): {}", name,
-                              m.geometry == Geometry::axisymmetric ? "an axisymmetric" : "a 3-D", known));
+        item.fail(fmt::format("'{}' is not an array of {} model's frames (names without the unit suffix): {}{}", name,
+                              m.geometry == Geometry::axisymmetric ? "an axisymmetric" : "a 3-D", known,
+                              did_you_mean(name, names)));
       }
       if (name == "contact_pressure" && m.contacts.empty())
         item.fail("'contact_pressure' is written only for models with contact pairs, and this one has none");

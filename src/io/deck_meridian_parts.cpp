@@ -117,7 +117,11 @@ Meridian read_piece(const DeckNode& mesh, Model& m, long& elements) {
   auto gen = meridian_types().find(type);
   if (gen == meridian_types().end())
     mesh["type"].fail("unknown mesh type '" + type + "' for an axisymmetric part (known: line, arc, points)" +
-                      did_you_mean(type, {"line", "arc", "points"}));
+                      did_you_mean(type, {"line", "arc", "points"}) +
+                      (type == "tube" || type == "sphere" || type == "octant" || type == "gmsh"
+                           ? "; `" + type + "` meshes a 3-D surface: for a 3-D part write `element: membrane`, "
+                             "or describe the meridian with `line`, `arc` or `points`"
+                           : ""));
   const Params mp = read_params(mesh, gen->second.spec, m.units, {"type"});
   warn_unitless_values(mesh, gen->second.spec, m);
   elements += mp.integer("elements");

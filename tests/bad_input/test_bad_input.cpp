@@ -546,6 +546,16 @@ TEST(BadInput, AMeridianMeshOnA3DPartNamesTheAxisymmetricElement) {
                "    mesh: {type: line,");
 }
 
+TEST(BadInput, ASurfaceMeshOnAnAxisymmetricPartNamesThe3dElement) {
+  // `type: tube` under `element: axisymmetric_membrane`: the part wants a meridian.
+  expect_error("tube-on-axisymmetric", "    mesh: {type: line, from: [0.763 mm, 0 mm], to: [0.763 mm, 1 mm], elements: 1}",
+               "    mesh: {type: tube, radius: 0.763 mm, length: 1 mm, around: 16, along: 4}", "parts.wall.mesh.type",
+               "unknown mesh type 'tube' for an axisymmetric part (known: line, arc, points); `tube` meshes a 3-D "
+               "surface: for a 3-D part write `element: membrane`, or describe the meridian with `line`, `arc` or "
+               "`points`",
+               "    mesh: {type: tube,");
+}
+
 TEST(BadInput, AReactionOnADofNothingHoldsIsWarnedAboutWithWhatTheSetHolds) {
   // wall.end holds z only (boundary `stretch`): its r reaction would be 0 throughout.
   const std::string text = replace(read_text(kExample), "{quantity: reaction_z, node_set: wall.end,",

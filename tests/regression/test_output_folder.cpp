@@ -336,6 +336,9 @@ TEST(OutputFolder, VtkFieldsSelectTheArraysOfEachFrame) {
   EXPECT_NE(bad.output.find("output.vtk_fields"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("'sigma_max' is not an array of an axisymmetric model's frames"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("sigma_meridional_inner"), std::string::npos) << bad.output;
+  const Outcome misspelt = run_cli("check " + deck(dir, "misspelt.yaml", "  vtk_fields: [thicknes]\n"));
+  EXPECT_EQ(misspelt.exit_code, 2) << misspelt.output;
+  EXPECT_NE(misspelt.output.find("did you mean 'thickness'?"), std::string::npos) << misspelt.output;
   const Outcome suffixed = run_cli("check " + deck(dir, "suffixed.yaml", "  vtk_fields: [sigma_hoop_N_per_mm2]\n"));
   EXPECT_EQ(suffixed.exit_code, 2) << suffixed.output;
   EXPECT_NE(suffixed.output.find("write the name without its unit suffix, 'sigma_hoop'"), std::string::npos)
