@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "contributions/element_type.hpp"
+#include "model/node_label.hpp"
 
 namespace tunica {
 
@@ -83,7 +84,8 @@ public:
   };
 
   explicit KernelBlock(BlockContext ctx)
-      : model_(ctx.model), block_(ctx.block), kernel_(ctx), layout_(std::move(ctx.layout)),
+      : model_(ctx.model), block_(ctx.block), part_(ctx.part.name), first_element_(ctx.first_element), kernel_(ctx),
+        layout_(std::move(ctx.layout)),
         curvature_(std::move(ctx.curvature)),
         points_per_element_(element_type(ctx.block.kind).points_per_element(ctx.part)) {
     // The registration, the model's kind and the kernel must agree on the element's size: the
@@ -119,7 +121,12 @@ public:
       State s;
       const int* en = block_.element(e);
       Kernel::gather(model_, en, u, s);
-      kernel_.internal(e, s, f, K ? &Ke : nullptr);
+      try {
+        kernel_.internal(e, s, f, K ? &Ke : nullptr);
+      } catch (const std::domain_error& err) {  // an inadmissible state: where, for the run's message
+        throw std::domain_error(fmt::format("{}, in element {} of part '{}' (its first node: {})", err.what(),
+                                            first_element_ + e, part_, node_label(model_, en[0])));
+      }
       double s2 = f.squaredNorm();
       if constexpr (Kernel::kPressure) {
         if (pressure != 0.0) {
@@ -378,6 +385,8 @@ private:
 
   const Model& model_;
   const ElementBlock& block_;
+  std::string part_;        ///< the part's name, for messages
+  int first_element_ = 0;   ///< the block's first element's index in its part
   Kernel kernel_;
   BlockLayout layout_;
   std::vector<double> curvature_;

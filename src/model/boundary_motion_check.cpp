@@ -31,6 +31,19 @@ struct Motion {
   bool toward = false;
 };
 
+/// Calls `f(step, boundary, value)` for each finite nonzero value a forward step gives a boundary
+/// (an inverse step's values place the reference, not the loaded state).
+void for_each_value(const Model& m, const std::function<void(int, int, double)>& f) {
+  for (int s = 0; s < static_cast<int>(m.steps.size()); ++s) {
+    const Step& step = m.steps[s];
+    if (step.inverse) continue;
+    for (int b = 0; b < static_cast<int>(m.boundaries.size()); ++b) {
+      const auto target = step.targets.find(m.boundaries[b].name);
+      if (target != step.targets.end() && std::isfinite(target->second) && target->second != 0) f(s, b, target->second);
+    }
+  }
+}
+
 /// Calls `f` for each nonzero value of a translational DOF of a boundary in a forward step.
 void for_each_motion(const Model& m, const std::function<void(const Motion&)>& f) {
   if (m.X.empty()) return;
@@ -45,34 +58,28 @@ void for_each_motion(const Model& m, const std::function<void(const Motion&)>& f
       if (d < dim)
         for (int n : m.node_sets[m.boundaries[b].node_set].nodes)
           if (held_by[d][n] < 0) held_by[d][n] = b;
-  for (int s = 0; s < static_cast<int>(m.steps.size()); ++s) {
-    const Step& step = m.steps[s];
-    if (step.inverse) continue;  // an inverse step's values place the reference, not the loaded state
-    for (int b = 0; b < static_cast<int>(m.boundaries.size()); ++b) {
-      const Boundary& bc = m.boundaries[b];
-      const auto target = step.targets.find(bc.name);
-      if (target == step.targets.end() || !std::isfinite(target->second) || target->second == 0) continue;
-      const NodeSet& set = m.node_sets[bc.node_set];
-      if (set.nodes.empty()) continue;
-      std::vector<char> in_set(m.num_nodes(), 0);
-      for (int n : set.nodes) in_set[n] = 1;
-      for (int d : bc.dofs) {
-        if (d >= dim) continue;
-        Motion mo{s, b, d, target->second};
-        mo.slo = std::numeric_limits<double>::infinity(), mo.shi = -mo.slo;
-        for (int n : set.nodes) {
-          if (m.X[n](d) < mo.slo) mo.slo = m.X[n](d), mo.nlo = n;
-          mo.shi = std::max(mo.shi, m.X[n](d));
-        }
-        mo.lo = lo(d), mo.hi = hi(d);
-        for (int n = 0; n < m.num_nodes() && mo.other < 0; ++n)
-          if (!in_set[n] && held_by[d][n] >= 0) mo.other = held_by[d][n];
-        const double mid = 0.5 * (mo.lo + mo.hi), centre = 0.5 * (mo.slo + mo.shi);
-        mo.toward = (mo.u < 0 && centre > mid) || (mo.u > 0 && centre < mid);
-        f(mo);
+  for_each_value(m, [&](int s, int b, double u) {
+    const Boundary& bc = m.boundaries[b];
+    const NodeSet& set = m.node_sets[bc.node_set];
+    if (set.nodes.empty()) return;
+    std::vector<char> in_set(m.num_nodes(), 0);
+    for (int n : set.nodes) in_set[n] = 1;
+    for (int d : bc.dofs) {
+      if (d >= dim) continue;
+      Motion mo{s, b, d, u};
+      mo.slo = std::numeric_limits<double>::infinity(), mo.shi = -mo.slo;
+      for (int n : set.nodes) {
+        if (m.X[n](d) < mo.slo) mo.slo = m.X[n](d), mo.nlo = n;
+        mo.shi = std::max(mo.shi, m.X[n](d));
       }
+      mo.lo = lo(d), mo.hi = hi(d);
+      for (int n = 0; n < m.num_nodes() && mo.other < 0; ++n)
+        if (!in_set[n] && held_by[d][n] >= 0) mo.other = held_by[d][n];
+      const double mid = 0.5 * (mo.lo + mo.hi), centre = 0.5 * (mo.slo + mo.shi);
+      mo.toward = (mo.u < 0 && centre > mid) || (mo.u > 0 && centre < mid);
+      f(mo);
     }
-  }
+  });
 }
 
 }  // namespace
@@ -122,29 +129,23 @@ std::vector<MotionMisfit> boundary_motion_warnings(const Model& m) {
                      span(mo.lo, mo.hi), m.boundaries[mo.other].name, dn)});
   });
   // One value for several translational DOFs moves the set by it along each (diagonally).
-  for (int s = 0; s < static_cast<int>(m.steps.size()); ++s) {
-    if (m.steps[s].inverse) continue;
-    for (int b = 0; b < static_cast<int>(m.boundaries.size()); ++b) {
-      const Boundary& bc = m.boundaries[b];
-      const auto target = m.steps[s].targets.find(bc.name);
-      if (target == m.steps[s].targets.end() || target->second == 0 || !std::isfinite(target->second)) continue;
-      std::vector<std::string> moved;
-      for (int d : bc.dofs)
-        if (d < m.dofs_per_node()) moved.push_back(dof_name(m, d));
-      if (moved.size() < 2) continue;
-      std::string list;
-      for (std::size_t k = 0; k < moved.size(); ++k)
-        list += (k == 0 ? "" : k + 1 == moved.size() ? " and " : ", ") + moved[k];
-      out.push_back({s, b,
-                     fmt::format("boundary '{}' names {} and step '{}' sets it to {:.4g} {}: a boundary value moves "
-                                 "every DOF the boundary names by it, so node set '{}' moves by {:.4g} {} along each "
-                                 "of {}. To move it along one only, hold the others in a boundary of their own (e.g. "
-                                 "`{}_hold: {{node_set: {}, dofs: [{}]}}`) and name only the moving DOF in '{}'",
-                                 bc.name, list, m.steps[s].name, in_len(target->second), len,
-                                 m.node_sets[bc.node_set].name, in_len(target->second), len, list, bc.name,
-                                 m.node_sets[bc.node_set].name, moved.front(), bc.name)});
-    }
-  }
+  for_each_value(m, [&](int s, int b, double u) {
+    const Boundary& bc = m.boundaries[b];
+    std::vector<std::string> moved;
+    for (int d : bc.dofs)
+      if (d < m.dofs_per_node()) moved.push_back(dof_name(m, d));
+    if (moved.size() < 2) return;
+    std::string list;
+    for (std::size_t k = 0; k < moved.size(); ++k)
+      list += (k == 0 ? "" : k + 1 == moved.size() ? " and " : ", ") + moved[k];
+    out.push_back({s, b,
+                   fmt::format("boundary '{}' names {} and step '{}' sets it to {:.4g} {}: a boundary value moves "
+                               "every DOF the boundary names by it, so node set '{}' moves by {:.4g} {} along each "
+                               "of {}. To move it along one only, hold the others in a boundary of their own (e.g. "
+                               "`{}_hold: {{node_set: {}, dofs: [{}]}}`) and name only the moving DOF in '{}'",
+                               bc.name, list, m.steps[s].name, in_len(u), len, m.node_sets[bc.node_set].name,
+                               in_len(u), len, list, bc.name, m.node_sets[bc.node_set].name, moved.front(), bc.name)});
+  });
   return out;
 }
 

@@ -211,7 +211,7 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   last_info_ = info;
   last_framed_ = wants_frame(info) || (model_.output.vtk && stop_requested());
   if (last_framed_) write_frame(analysis, info);
-  note_compression(analysis, info);
+  note_membrane_states(analysis, info);
   note_penetration(analysis, info);
   note_jumps(analysis, info);
   // The end of an inverse step: its zero-pressure geometry (reference_mesh.hpp), written before the
@@ -239,39 +239,53 @@ void RunWriter::on_increment(const Analysis& analysis, const IncrementInfo& info
   }
 }
 
-void RunWriter::note_compression(const Analysis& analysis, const IncrementInfo& info) {
-  if (info.step == 0) return;  // the reference state is unstressed
+void RunWriter::note_membrane_states(const Analysis& analysis, const IncrementInfo& info) {
+  if (info.step == 0) return;  // the reference state is unstressed and unstretched
   compression_noted_.resize(model_.parts.size(), 0);
+  stretch_noted_.resize(model_.parts.size(), 0);
+  const std::string when = fmt::format("at step {} '{}', increment {}", info.step, info.step_name, info.increment);
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
     const Part& part = model_.parts[p];
-    if (compression_noted_[p] || part.is_solid() || part.is_shell()) continue;
+    if ((compression_noted_[p] && stretch_noted_[p]) || part.is_solid() || part.is_shell()) continue;
+    // One evaluation of the part's points serves both notes.
     const std::vector<MembranePoint> points =
         analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step);
-    const double f = compressed_fraction(points);
-    if (f <= 0.01) continue;
-    compression_noted_[p] = 1;
-    // How strong: the largest compression against the largest tension (or all compression).
-    const CompressionSize size = compression_size(points);
-    const auto kpa = [&](double s) { return model_.units.from_internal(s, "kPa", Dimension::pressure); };
-    const std::string strength =
-        size.tension > 0 && -size.compression > size.tension
-            ? fmt::format("the largest compressive principal stress, {:.4g} kPa, exceeds the largest tension, {:.4g} kPa",
-                          kpa(size.compression), kpa(size.tension))
-        : size.tension > 0
-            ? fmt::format("the largest compressive principal stress is {:.3g} % of the largest tension ({:.4g} kPa "
-                          "against {:.4g} kPa)",
-                          -100 * size.compression / size.tension, kpa(size.compression), kpa(size.tension))
-            : fmt::format("no point is in tension; the largest compressive principal stress is {:.4g} kPa",
-                          kpa(size.compression));
-    std::fprintf(stderr,
-                 "tunica: note: part '%s' is in compression over %.1f %% of its area at step %d '%s', increment %d "
-                 "(a negative principal stress below -1 %% of the part's largest; %s): a real membrane wrinkles "
-                 "there, which Tunica does not model yet; its results there are those of a membrane that carries "
-                 "compression. The history quantity `compressed_fraction` and the ParaView field `compressed` show "
-                 "where.\n",
-                 terminal_safe(part.name).c_str(), 100 * f, info.step, terminal_safe(info.step_name).c_str(),
-                 info.increment, terminal_safe(strength).c_str());
+    if (!compression_noted_[p]) note_compression(p, points, info);
+    if (!stretch_noted_[p]) {
+      const std::string note = extreme_stretch_note(analysis.model(), static_cast<int>(p), points, when);
+      if (note.empty()) continue;
+      stretch_noted_[p] = 1;
+      std::fprintf(stderr, "tunica: note: %s.\n", terminal_safe(note).c_str());
+    }
   }
+}
+
+void RunWriter::note_compression(std::size_t p, const std::vector<MembranePoint>& points, const IncrementInfo& info) {
+  const Part& part = model_.parts[p];
+  const double f = compressed_fraction(points);
+  if (f <= 0.01) return;
+  compression_noted_[p] = 1;
+  // How strong: the largest compression against the largest tension (or all compression).
+  const CompressionSize size = compression_size(points);
+  const auto kpa = [&](double s) { return model_.units.from_internal(s, "kPa", Dimension::pressure); };
+  const std::string strength =
+      size.tension > 0 && -size.compression > size.tension
+          ? fmt::format("the largest compressive principal stress, {:.4g} kPa, exceeds the largest tension, {:.4g} kPa",
+                        kpa(size.compression), kpa(size.tension))
+      : size.tension > 0
+          ? fmt::format("the largest compressive principal stress is {:.3g} % of the largest tension ({:.4g} kPa "
+                        "against {:.4g} kPa)",
+                        -100 * size.compression / size.tension, kpa(size.compression), kpa(size.tension))
+          : fmt::format("no point is in tension; the largest compressive principal stress is {:.4g} kPa",
+                        kpa(size.compression));
+  std::fprintf(stderr,
+               "tunica: note: part '%s' is in compression over %.1f %% of its area at step %d '%s', increment %d "
+               "(a negative principal stress below -1 %% of the part's largest; %s): a real membrane wrinkles "
+               "there, which Tunica does not model yet; its results there are those of a membrane that carries "
+               "compression. The history quantity `compressed_fraction` and the ParaView field `compressed` show "
+               "where.\n",
+               terminal_safe(part.name).c_str(), 100 * f, info.step, terminal_safe(info.step_name).c_str(),
+               info.increment, terminal_safe(strength).c_str());
 }
 
 void RunWriter::note_jumps(const Analysis& analysis, const IncrementInfo& info) {
@@ -284,17 +298,6 @@ void RunWriter::note_jumps(const Analysis& analysis, const IncrementInfo& info) 
         volume_jump_note(analysis.model(), static_cast<int>(l), info.step - 1, analysis.checkpoint().trace, when);
     if (note.empty()) continue;
     jump_noted_[l] = 1;
-    std::fprintf(stderr, "tunica: note: %s.\n", terminal_safe(note).c_str());
-  }
-  stretch_noted_.resize(model_.parts.size(), 0);
-  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
-    const Part& part = model_.parts[p];
-    if (stretch_noted_[p] || part.is_solid() || part.is_shell()) continue;
-    const std::vector<MembranePoint> points =
-        analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step);
-    const std::string note = extreme_stretch_note(analysis.model(), static_cast<int>(p), points, when);
-    if (note.empty()) continue;
-    stretch_noted_[p] = 1;
     std::fprintf(stderr, "tunica: note: %s.\n", terminal_safe(note).c_str());
   }
 }

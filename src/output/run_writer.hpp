@@ -59,15 +59,18 @@ private:
   void commit_checkpoint();
   void write_frame(const Analysis& analysis, const IncrementInfo& info);
   bool wants_frame(const IncrementInfo& info) const;
-  /// The first time a membrane part is in compression over more than 1 % of its reference area,
-  /// a note on standard error (elements/membrane_compression.hpp), once per part.
-  void note_compression(const Analysis& analysis, const IncrementInfo& info);
+  /// The notes on a membrane part's state, from one evaluation of its points: the first time it is
+  /// in compression over more than 1 % of its reference area (elements/membrane_compression.hpp),
+  /// and the first time it is stretched or crushed beyond what a membrane reaches
+  /// (output/jump_notes.hpp); each once per part.
+  void note_membrane_states(const Analysis& analysis, const IncrementInfo& info);
+  /// The compression note on part `p`, if its points call for it.
+  void note_compression(std::size_t p, const std::vector<MembranePoint>& points, const IncrementInfo& info);
   /// The first time a contact pair's penetration is far beyond the penalty's scale, a warning on
   /// standard error at the pair (assembly/contact_penetration.hpp), once per pair.
   void note_penetration(const Analysis& analysis, const IncrementInfo& info);
-  /// The first time a load's volume jumps onto a far branch of its curve, and the first time a
-  /// membrane part is stretched or crushed beyond what a membrane reaches: a note on standard
-  /// error (output/jump_notes.hpp), once per load and per part.
+  /// The first time a load's volume jumps onto a far branch of its curve: a note on standard
+  /// error (output/jump_notes.hpp), once per load.
   void note_jumps(const Analysis& analysis, const IncrementInfo& info);
 
   const Model& model_;

@@ -2,6 +2,7 @@
 
 #include "assembly/pressure_load_checks.hpp"
 #include "solver/failure_hints.hpp"
+#include "solver/shell_fold_hint.hpp"
 #include "solver/forward_solve_counter.hpp"
 
 #include <fmt/format.h>
@@ -461,9 +462,12 @@ void Analysis::run_step(AnalysisObserver& observer) {
                 : fmt::format("no convergence with the increment cut back to {:.3g} of the step ({} cut-back(s) "
                               "allowed)",
                               dt, step.solver.max_cutbacks);
-        std::string hint = everted_load >= 0
-                               ? eversion_hint(*model_, everted_load, step, s, state_.trace)
-                               : failure_hints(*model_, step, r, state_.trace, trial, reference_volume_);
+        // A shell bent through its thickness first: no load path or iteration count passes it.
+        std::string hint = shell_fold_hint(*system_, state_.u, s, r.failure);
+        if (!hint.empty()) hint = " Hint: " + hint;
+        else
+          hint = everted_load >= 0 ? eversion_hint(*model_, everted_load, step, s, state_.trace)
+                                   : failure_hints(*model_, step, r, state_.trace, trial, reference_volume_);
         const std::string contact = contact_hints(r, s);
         // No other evidence: the last converged state's compression, theory manual (7.13).
         if (hint.empty() && contact.empty()) hint = compression_hint(*system_, state_.u, step, s, state_.trace);

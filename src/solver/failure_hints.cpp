@@ -122,6 +122,14 @@ constexpr double kDisplacementScaleFactor = 3;
 /// model's bounding box (a stretch of 1 + that at least, where tissue and balloons reach 2–3):
 /// a value or a unit mistyped; else one that moves nodes past the model's far side or across the
 /// axis (model/boundary_motion_check.hpp). "" if none.
+/// The 0-based index of `step` in model.steps, or -1 for a step that is not one of them (as a
+/// unit test's own step is not).
+int index_in_model(const Model& model, const Step& step) {
+  for (std::size_t i = 0; i < model.steps.size(); ++i)
+    if (&model.steps[i] == &step) return static_cast<int>(i);
+  return -1;
+}
+
 std::string displacement_scale_hint(const Model& model, const Step& step) {
   if (model.X.empty()) return "";
   Eigen::Vector3d lo = model.X.front(), hi = lo;
@@ -146,9 +154,8 @@ std::string displacement_scale_hint(const Model& model, const Step& step) {
         b.name, in_len(d), len, d / size, in_len(size), len, 1 + d / size, len);
   }
   // A value that moves nodes past the model's far side or across the axis.
-  if (!model.steps.empty() && &step >= &model.steps.front() && &step <= &model.steps.back())
-    return boundary_motion_hint(model, static_cast<int>(&step - &model.steps.front()));
-  return "";
+  const int index = index_in_model(model, step);
+  return index >= 0 ? boundary_motion_hint(model, index) : "";
 }
 
 }  // namespace
@@ -207,9 +214,7 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
     for (const ElementBlock& b : part.blocks) linear_triangles = linear_triangles || b.kind == ElementKind::tri3;
   // A step that shortens the wall: compression, which a membrane does not carry (it wrinkles).
   const std::string shortening =
-      slack && &step >= &model.steps.front() && &step <= &model.steps.back()
-          ? shortening_motions(model, static_cast<int>(&step - &model.steps.front()))
-          : std::string();
+      slack && index_in_model(model, step) >= 0 ? shortening_motions(model, index_in_model(model, step)) : std::string();
   if (slack && !shortening.empty())
     add(fmt::format(
         "step '{}' shortens the wall with no pressure on it ({}): a membrane carries no compression, it wrinkles or "

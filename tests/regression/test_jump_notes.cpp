@@ -6,6 +6,7 @@
 
 #include "../support/cli.hpp"
 #include "../support/deck_files.hpp"
+#include "../support/step_trace_along.hpp"
 #include "io/deck.hpp"
 #include "output/jump_notes.hpp"
 
@@ -31,18 +32,6 @@ loads:
 steps:
   - {name: blow, increments: 10, set: {p: 15 kPa}}
 )";
-
-StepTrace along(const std::vector<std::pair<double, double>>& pv) {
-  StepTrace out;
-  for (auto [p, v] : pv) {
-    LoadState s;
-    s.pressure = {p};
-    s.volume = {v};
-    if (out.count() == 0) out.restart_at(s);
-    else out.push(s);
-  }
-  return out;
-}
 
 }  // namespace
 

@@ -10,10 +10,12 @@
 
 #include <string>
 
+#include "../support/step_trace_along.hpp"
 #include "io/deck.hpp"
 #include "solver/failure_hints.hpp"
 
 using namespace tunica;
+using tunica::test::along;
 
 namespace {
 
@@ -34,19 +36,6 @@ Step raising(double target) {
   s.targets["blood"] = target;
   s.solver.max_iterations = 12;
   return s;
-}
-
-/// Converged states along p(V): the step's start and each increment's.
-StepTrace along(const std::vector<std::pair<double, double>>& pv) {
-  StepTrace out;
-  for (auto [p, v] : pv) {
-    LoadState s;
-    s.pressure = {p};
-    s.volume = {v};
-    if (out.count() == 0) out.restart_at(s);
-    else out.push(s);
-  }
-  return out;
 }
 
 /// The loads of a failed increment that tried pressure p.
