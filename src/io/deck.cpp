@@ -35,6 +35,7 @@
 #include "model/coincident_nodes_check.hpp"
 #include "model/edge_frame_check.hpp"
 #include "model/frame_axis_check.hpp"
+#include "model/held_part_check.hpp"
 #include "model/wall_thickness_check.hpp"
 #include "model/symmetry_plane_check.hpp"
 #include "model/node_label.hpp"
@@ -1118,6 +1119,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
   // An axisymmetric membrane's pole whose r is free: at the part.
   for (const PoleMisfit& w : free_pole_warnings(m))
     m.warnings.push_back(format_location(deck["parts"][m.parts[w.part].name].where(), w.message));
+  // A part that its boundaries hold at every node in every DOF: at the boundary holding most of it.
+  for (const HeldPart& w : held_part_warnings(m))
+    m.warnings.push_back(format_location(m.boundaries[w.boundary].where, w.message));
   // A boundary value that moves nodes past the model's far side or across the axis: at the value.
   for (const MotionMisfit& w : boundary_motion_warnings(m)) {
     const std::vector<DeckNode> steps = deck["steps"].items();

@@ -556,6 +556,28 @@ TEST(BadInput, ASurfaceMeshOnAnAxisymmetricPartNamesThe3dElement) {
                "    mesh: {type: tube,");
 }
 
+TEST(BadInput, APartHeldAtEveryNodeInEveryDofIsWarnedAbout) {
+  // `base` given `wall.all` and both DOFs: the wall cannot deform, the pressure does nothing.
+  const std::string text =
+      replace(replace(replace(read_text(kExample), "base:    {node_set: wall.start, dofs: [z]}",
+                              "base:    {node_set: wall.all, dofs: [r, z]}"),
+                      "  stretch: {node_set: wall.end, dofs: [z]}", ""),
+              "set: {stretch: 0.6 mm}", "set: {lumen: 10 mmHg}");
+  const std::string path = write_deck("held-part", text);
+  const Outcome o = run_cli("check " + path);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find(fmt::format("warning: {}:{}:", path, line_of(text, "base:    {node_set: wall.all"))),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("key 'boundary.base': every node of part 'wall' is held in every DOF (r, z) by boundary "
+                          "'base': the part cannot deform"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("the ends ('wall.start', 'wall.end')"), std::string::npos) << o.output;
+  // The example as it is: no such warning.
+  EXPECT_EQ(run_cli("check " + kExample).output.find("cannot deform"), std::string::npos);
+}
+
 TEST(BadInput, AReactionOnADofNothingHoldsIsWarnedAboutWithWhatTheSetHolds) {
   // wall.end holds z only (boundary `stretch`): its r reaction would be 0 throughout.
   const std::string text = replace(read_text(kExample), "{quantity: reaction_z, node_set: wall.end,",
