@@ -199,9 +199,9 @@ const ComponentSpec& step_spec() {
        structured("volume_control", "map",
                   "`{load: <pressure load>, volume: <target>}`: that load's pressure becomes an unknown and "
                   "the enclosed volume of its surface is ramped from its value at the start of the step to "
-                  "the target (follows a pressure maximum; axisymmetric and 3-D models). The load's volume must be "
-                  "positive at the reference state: volume control of a load that pushes its surface inward is an "
-                  "error"),
+                  "the target (follows a pressure maximum; axisymmetric and 3-D models). The load's volume must not "
+                  "be negative at the reference state: volume control of a load that pushes its surface inward is an "
+                  "error; a flat sheet (volume 0, the bulge test) starts from its flat state"),
        structured("solver", "map", "overrides of the top-level `solver` keys for this step")}};
   return s;
 }

@@ -5,9 +5,31 @@
 #include <stdexcept>
 
 #include "linalg/perturbed_solve.hpp"
+#include "materials/membrane_material.hpp"
 #include "solver/newton.hpp"
 
 namespace tunica {
+
+namespace {
+
+/// A pressure to seed p̂ with when the step starts at p = 0 on a surface that K alone does not hold
+/// in the bordered system (a flat sheet: no curvature, so no pressure and no normal stiffness):
+/// μ₀H/ℓ of the load's part, μ₀ its material's shear modulus at rest, H its thickness and ℓ its
+/// size (the diagonal of its nodes' bounding box), the Laplace pressure of a wall of curvature 1/ℓ
+/// at unit tension scale. 0 where the part has no membrane material.
+double seed_pressure(const Model& m, int load) {
+  const Part& part = m.parts[m.loads[load].part];
+  if (!part.material || !(part.thickness > 0) || part.nodes.empty()) return 0;
+  const MembraneResponse rest = membrane_response(*part.material, Eigen::Vector3d(1, 1, 0));
+  const double mu0 = (rest.D(0, 0) + rest.D(1, 1)) / 8;
+  Eigen::Vector3d lo = m.X[part.nodes.front()], hi = lo;
+  for (int n : part.nodes) lo = lo.cwiseMin(m.X[n]), hi = hi.cwiseMax(m.X[n]);
+  const double size = (hi - lo).norm();
+  if (!(mu0 > 0) || !std::isfinite(mu0) || !(size > 0)) return 0;
+  return mu0 * part.thickness / size;
+}
+
+}  // namespace
 
 std::optional<FirstCorrection> VolumeStartStiffness::take(
     LinearSolver& solver, const std::function<void(const IterationRecord&)>& on_iteration) {
@@ -47,8 +69,11 @@ std::optional<FirstCorrection> VolumeStartStiffness::take(
     }
     std::string note;
     if (!solve_perturbed(solver, problem_.bordered(Ks), rhs, false, problem_.max_correction(), first.dx, note,
-                         rec.factor_seconds, rec.solve_seconds))
+                         rec.factor_seconds, rec.solve_seconds)) {
+      // At rest on a flat sheet K alone leaves the normal modes free: seed p̂ once, then settle it.
+      if (solve == 0 && estimate == 0 && (estimate = seed_pressure(system.model(), problem_.load())) > 0) continue;
       return std::nullopt;
+    }
     rec.solver = solver.used() + note;
     const double pressure = pn + first.dx(nf);
     if (!std::isfinite(pressure)) return std::nullopt;
