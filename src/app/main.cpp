@@ -38,14 +38,18 @@ constexpr int kInputErrorExit = 2;
 constexpr int kSolveErrorExit = 3;
 constexpr int kOtherErrorExit = 4;
 
-/// What the model reads as valid but is likely not meant (assembly/pressure_load_checks.hpp).
-void print_warnings(const tunica::System& system) {
-  for (const std::string& w : system.model().warnings)
+/// What the model reads as valid but is likely not meant (assembly/pressure_load_checks.hpp);
+/// returns how many warnings were printed.
+int print_warnings(const tunica::System& system) {
+  int count = 0;
+  const auto print = [&](const std::string& w) {
     std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
-  for (const std::string& w : tunica::pressure_load_warnings(system))
-    std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
-  for (const std::string& w : tunica::volume_control_warnings(system))
-    std::fprintf(stderr, "tunica: warning: %s\n", for_terminal(w).c_str());
+    ++count;
+  };
+  for (const std::string& w : system.model().warnings) print(w);
+  for (const std::string& w : tunica::pressure_load_warnings(system)) print(w);
+  for (const std::string& w : tunica::volume_control_warnings(system)) print(w);
+  return count;
 }
 
 int run(const std::string& deck, std::string out, const std::string& restart, bool quiet,
@@ -81,14 +85,20 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
   tunica::RunWriter writer(model, out, quiet ? nullptr : stdout, resume.get());
   tunica::Analysis analysis(model);
   tunica::check_volume_control_sides(analysis.system());
-  print_warnings(analysis.system());
+  const int warnings = print_warnings(analysis.system());
   tunica::install_stop_handlers();
   const auto t0 = std::chrono::steady_clock::now();
   try {
     analysis.run(writer, resume ? &resume->checkpoint : nullptr);
-  } catch (const tunica::SolveError&) {
+  } catch (const tunica::SolveError& e) {
     writer.write_newton_log();  // keep the failed attempts for diagnosis
     writer.finish(analysis);    // the last converged state: its frame and its checkpoint
+    // A stop without a hint of its own, in a deck that drew warnings: they are the first suspects.
+    if (warnings > 0 && std::string(e.what()).find(" Hint:") == std::string::npos)
+      throw tunica::SolveError(fmt::format(
+          "{} Hint: the deck drew {} warning(s) before the run (above); a stop without other evidence often follows "
+          "from one of them (a boundary on the wrong set, a load on the wrong side): check them first.",
+          e.what(), warnings));
     throw;
   } catch (const tunica::Interrupted& e) {
     const int sig = tunica::stop_signal();

@@ -27,6 +27,7 @@
 #include "io/deck_solid_parts.hpp"
 #include "io/deck_surface_parts.hpp"
 #include "io/inverse_step_checks.hpp"
+#include "io/material_aliases.hpp"
 #include "io/unitless_values.hpp"
 #include "io/unit_advice.hpp"
 #include "io/yaml_syntax.hpp"
@@ -880,8 +881,23 @@ void read_output(const DeckNode& deck, Model& m) {
                                 target.empty() ? "no set" : with_article(target), of_nodes));
       }
     }
-    if (!target.empty() && !h.has(target))
-      h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'", r.quantity, target));
+    if (!target.empty() && !h.has(target)) {
+      // The names the key could take, so that the fix can be copied (a reverse pass is no pair).
+      std::vector<std::string> names;
+      if (target == "part") names = names_of(m.parts);
+      else if (target == "node_set") names = names_of(m.node_sets);
+      else if (target == "load") names = names_of(m.loads);
+      else
+        for (const ContactPair& c : m.contacts)
+          if (!c.is_reverse_pass()) names.push_back(c.name);
+      std::string list;
+      for (std::size_t i = 0; i < names.size() && i < 12; ++i) list += (i ? ", " : "") + names[i];
+      if (names.size() > 12) list += ", …";
+      h.fail("quantity", fmt::format("quantity '{}' needs the key '{}'{}", r.quantity, target,
+                                     names.empty() ? std::string()
+                                                   : fmt::format(" (e.g. `{}: {}`; the deck's: {})", target,
+                                                                 names.front(), list)));
+    }
     if (q->target == QuantityTarget::part) {
       r.part = m.find_part(h.text("part"));
       if (r.part < 0) h.fail("part", "undefined part '" + h.text("part") + "' " + known_names(h.text("part"), names_of(m.parts), "parts"));
@@ -1043,8 +1059,11 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     try {
       m.units = UnitSystem(u.text("length"), u.text("force"));
     } catch (const std::invalid_argument& e) {
+      const std::string f = u.text("force");
+      const bool mass = f == "kg" || f == "g" || f == "mg" || f == "t" || f == "lb";
       u.fail("force", std::string(e.what()) + " (a force unit, e.g. N, mN, kN)" +
-                          did_you_mean(u.text("force"), {"N", "mN", "kN", "uN"}));
+                          (mass ? "; '" + f + "' is a mass: forces are in newtons (1 kgf = 9.80665 N), e.g. `force: N`"
+                                : did_you_mean(f, {"N", "mN", "kN", "uN"})));
     }
   }
   const DeckNode mats = deck.required(
@@ -1065,6 +1084,17 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
       node["type"].fail("unknown material type '" + type + "' (known: " + list + ")" + did_you_mean(type, known));
     }
     const ComponentSpec& spec = t != material_types().end() ? t->second.spec : st->second.spec;
+    // A constant in another code's spelling (C10, E, ν): what it is here.
+    for (const auto& [key, value] : node.entries()) {
+      const bool known = key == "type" || std::any_of(spec.params.begin(), spec.params.end(),
+                                                      [&](const ParamSpec& q) { return q.name == key; });
+      if (known) continue;
+      if (const std::string hint = foreign_constant_hint(type, key); !hint.empty()) {
+        std::string allowed = "type";
+        for (const ParamSpec& q : spec.params) allowed += ", " + q.name;
+        value.fail(fmt::format("unknown key '{}' (allowed here: {}): {}", key, allowed, hint));
+      }
+    }
     const Params p = read_params(node, spec, m.units, {"type"});
     if (t != material_types().end())
       m.materials[name] = t->second.make(p);

@@ -93,7 +93,7 @@ std::vector<Q> make_table() {
   const Dimension none = Dimension::dimensionless, stress = Dimension::pressure;
   std::vector<Q> t;
   {
-    Q q = quantity("time", T::none, none, "analysis time: step number − 1 + fraction of the step done");
+    Q q = quantity("time", T::none, none, "analysis time: step number − 1 + fraction of the step done (always the third column of history.csv; a copy needs a `name`)");
     q.global = [](const QuantityState& s) { return s.time; };
     t.push_back(q);
   }

@@ -556,6 +556,37 @@ TEST(BadInput, ASurfaceMeshOnAnAxisymmetricPartNamesThe3dElement) {
                "    mesh: {type: tube,");
 }
 
+TEST(BadInput, AHistoryQuantityWithoutItsSetNamesTheDecksChoices) {
+  expect_error("history-no-part", "{quantity: lambda_1, part: wall, name: lambda_theta}",
+               "{quantity: lambda_1, name: lambda_theta}", "output.history[1].quantity",
+               "quantity 'lambda_1' needs the key 'part' (e.g. `part: wall`; the deck's: wall)");
+  expect_error("history-no-load", "{quantity: pressure, load: lumen, unit: mmHg}", "{quantity: pressure, unit: mmHg}",
+               "output.history[0].quantity",
+               "quantity 'pressure' needs the key 'load' (e.g. `load: lumen`; the deck's: lumen)");
+}
+
+TEST(BadInput, AnotherCodesMaterialConstantIsRelatedToTunicasOwn) {
+  const std::string fung = "    type: fung              # two-dimensional approach: a3 = a5 = a6 = 0\n    c: 61.163 kPa\n"
+                           "    a1: 0.68238\n    a2: 0.60558\n    a4: 0.1067";
+  expect_error("abaqus-c10", fung, "    type: mooney_rivlin\n    C10: 30 kPa\n    C01: 3 kPa", "materials.aorta.C10",
+               "unknown key 'C10' (allowed here: type, b1, b2): W = b1 (I1 − 3) + b2 (I2 − 3) here, Abaqus' and "
+               "FEBio's Mooney–Rivlin form: C10 is `b1` and C01 is `b2`",
+               "    C10: 30 kPa");
+  expect_error("febio-e", fung, "    type: neo_hookean\n    E: 300 kPa\n    v: 0.49", "materials.aorta.E",
+               "unknown key 'E' (allowed here: type, mu): write the shear modulus `mu`: for an incompressible "
+               "material μ = E/3",
+               "    E: 300 kPa");
+  expect_error("febio-v", fung, "    type: neo_hookean\n    mu: 100 kPa\n    v: 0.49", "materials.aorta.v",
+               "Tunica's membrane materials are exactly incompressible (ν = 0.5, no bulk modulus or D1): leave it out",
+               "    v: 0.49");
+}
+
+TEST(BadInput, AMassForTheForceUnitSaysItIsAMass) {
+  expect_error("force-kg", "units: {length: mm, force: N}", "units: {length: mm, force: kg}", "units.force",
+               "unit 'kg' is not a force (a force unit, e.g. N, mN, kN); 'kg' is a mass: forces are in newtons (1 kgf "
+               "= 9.80665 N), e.g. `force: N`");
+}
+
 TEST(BadInput, APartHeldAtEveryNodeInEveryDofIsWarnedAbout) {
   // `base` given `wall.all` and both DOFs: the wall cannot deform, the pressure does nothing.
   const std::string text =
