@@ -37,8 +37,12 @@ bool warn_if_unitless(const DeckNode& v, Dimension dim, Model& m, bool load_targ
   const double kpa = m.units.from_internal(p, "kPa", Dimension::pressure);
   const std::string meant = load_target ? "mmHg" : "kPa";
   const double as_meant = m.units.to_internal(written, meant, Dimension::pressure);
-  const std::string other =
+  std::string other =
       std::abs(as_meant - p) > 1e-9 * std::abs(p) ? fmt::format(", or `{} {}` if {} is meant", w, meant, meant) : "";
+  // A value in the hundreds or more from SI habits: pascals (FEBio and Abaqus decks in m, N, Pa).
+  if (std::abs(written) >= 100 &&
+      std::abs(m.units.to_internal(written, "Pa", Dimension::pressure) - p) > 1e-9 * std::abs(p))
+    other += fmt::format(", or `{} Pa` if pascals are meant", w);
   m.warnings.push_back(format_location(
       v.where(), load_target ? fmt::format("{} has no unit and is taken in the deck's pressure unit, {} (= {:.4g} kPa = "
                                            "{:.4g} mmHg); write the unit to be sure, e.g. `{:.10g} kPa` (this value){}",

@@ -31,14 +31,20 @@ std::vector<ThicknessMisfit> wall_thickness_misfits(const Model& m) {
       if (!b.file.empty()) file = b.file;
     const std::string mesh = file.empty() ? "its mesh" : "its mesh (" + file + ")";
     if (part.thickness >= extent) {
+      // A mesh file may be in another unit; a generated mesh has the deck's, so the thickness is the suspect.
+      const std::string likely =
+          file.empty()
+              ? std::string("Check the thickness's value and unit (e.g. a wall of 100 µm is `100 um` or `0.1 mm`, "
+                            "not `100 mm`): the mesh is generated from the deck's own lengths")
+              : fmt::format("Likely {} is written in another length unit than the deck's `units: {{length: {}}}` (a "
+                            "mesh in metres read as {} is a thousand times too small): convert the mesh to {}, or "
+                            "write the deck in the mesh's unit; else check the thickness's value and unit",
+                            mesh, unit, unit, unit);
       out.push_back({static_cast<int>(p), true,
                      fmt::format("part '{}': the thickness {:.4g} {} is at least the whole part's extent, {:.4g} {} "
-                                 "(the diagonal of its bounding box{}): no membrane is that thick. Likely {} is "
-                                 "written in another length unit than the deck's `units: {{length: {}}}` (a mesh in "
-                                 "metres read as {} is a thousand times too small): convert the mesh to {}, or write "
-                                 "the deck in the mesh's unit",
+                                 "(the diagonal of its bounding box{}): no membrane is that thick. {}",
                                  part.name, in_unit(part.thickness), unit, in_unit(extent), unit,
-                                 m.geometry == Geometry::axisymmetric ? ", revolved" : "", mesh, unit, unit, unit)});
+                                 m.geometry == Geometry::axisymmetric ? ", revolved" : "", likely)});
       continue;
     }
     std::vector<double> curvature;

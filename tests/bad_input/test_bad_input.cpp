@@ -330,6 +330,12 @@ TEST(BadInput, ABarePressureInAnSIDeckIsProposedWithItsValueAsRead) {
         "key 'steps[1].set.lumen': 26664.5 has no unit and is taken in the deck's pressure unit, N/m² (= 26.66 kPa = "
         "200 mmHg); write the unit to be sure, e.g. `26.6645 kPa` (this value), or `26664.5 mmHg` if mmHg is meant"})
     EXPECT_NE(o.output.find(says), std::string::npos) << says << " missing from: " << o.output;
+  // N/m² is Pa: no pascal reading is offered there; in mm and N a bare 6000 may be meant in Pa.
+  EXPECT_EQ(o.output.find("if pascals are meant"), std::string::npos) << o.output;
+  const Outcome mm = run_cli(
+      "check " + write_deck("mm-bare-pascals", replace(read_text(kExample), "set: {lumen: 200 mmHg}", "set: {lumen: 6000}")));
+  EXPECT_NE(mm.output.find("or `6000 mmHg` if mmHg is meant, or `6000 Pa` if pascals are meant"), std::string::npos)
+      << mm.output;
 }
 
 TEST(BadInput, AnAngleWithoutAUnitIsValidButSaid) {

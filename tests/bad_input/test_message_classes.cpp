@@ -693,6 +693,20 @@ TEST(MessageClasses, AThicknessBeyondThePartsExtentNamesTheMeshFileAndItsLengthU
   EXPECT_EQ(fine.output.find("thickness"), std::string::npos) << fine.output;
 }
 
+TEST(MessageClasses, AThicknessBeyondAGeneratedPartsExtentIsTheThicknessesMistake) {
+  // A generated meridian has the deck's own lengths: a 100 µm wall written `100 mm` is the suspect.
+  const std::string text = replace(read_text(std::string(TUNICA_SOURCE_DIR) + "/examples/rat-aorta-inflation.yaml"),
+                                   "thickness: 0.122 mm", "thickness: 100 mm");
+  const fs::path dir = fs::temp_directory_path() / kScratch / "wall-beyond-generated";
+  fs::create_directories(dir);
+  std::ofstream(dir / "deck.yaml") << text;
+  const Outcome o = run_cli("check " + (dir / "deck.yaml").string());
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_SAYS(o, "key 'parts.wall.thickness'");
+  EXPECT_SAYS(o, "Check the thickness's value and unit (e.g. a wall of 100 µm is `100 um` or `0.1 mm`, not `100 mm`)");
+  EXPECT_EQ(o.output.find("another length unit"), std::string::npos) << o.output;
+}
+
 TEST(MessageClasses, AWallThickerThanItsRadiusIsWarnedAtItsThickness) {
   const Outcome o = run_cli(
       "check " + write_deck_file(kScratch, "thick-wall", replace(read_text(kExample), "thickness: 0.122 mm", "thickness: 1 mm")));
