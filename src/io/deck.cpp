@@ -1085,7 +1085,9 @@ Model read_deck_text(const std::string& text, const std::string& file, const Rea
     }
     const ComponentSpec& spec = t != material_types().end() ? t->second.spec : st->second.spec;
     // A constant in another code's spelling (C10, E, ν): what it is here.
-    for (const auto& [key, value] : node.entries()) {
+    for (const auto& entry : node.entries()) {
+      const std::string& key = entry.first;
+      const DeckNode& value = entry.second;
       const bool known = key == "type" || std::any_of(spec.params.begin(), spec.params.end(),
                                                       [&](const ParamSpec& q) { return q.name == key; });
       if (known) continue;
