@@ -45,13 +45,23 @@ bool deformable_element(const ContactPair& pair, const Eigen::Vector2d& xs, cons
   }
   ContactVector6 f;
   ContactMatrix6 Kc;
-  e.point = chain_contact(xs, chain, where, area, pair.law, f, want_K && where.active(pair.law.offset) ? &Kc : nullptr);
+  e.point = chain_contact(xs, chain, where, area, pair.law, f, want_K && where.feature != ChainFeature::none && pair.law.touching(where.gap(pair.law.offset)) ? &Kc : nullptr);
   if (!e.point.active) return false;
   e.master = {where.segment, where.segment + 1, -1, -1};
   e.segment = where.segment;
   e.f.head<6>() = f;
   if (want_K) e.K.topLeftCorner<6, 6>() = Kc;
   return true;
+}
+
+/// The curvature part of a contact element's tangent, K − A_s p′ ∂g_N/∂u ⊗ ∂g_N/∂u (the Gauss–Newton
+/// part; f = −A_s p ∂g_N/∂u gives ∂g_N/∂u), times `factor`; theory manual (9.10).
+template <typename Vector, typename Matrix>
+Matrix curvature_part(const Vector& f, const Matrix& K, const ContactLaw& law, double area, double gap, double factor) {
+  const double pA = law.pressure(gap) * area;
+  if (!(pA > 0)) return factor * K;  // p = 0 at the edge of the blend: K is its Gauss–Newton part (0)
+  const Vector dg = -f / pA;
+  return factor * (K - law.stiffness(gap) * area * dg * dg.transpose());
 }
 
 }  // namespace
@@ -120,13 +130,26 @@ void ContactAssembly::assemble(const Eigen::VectorXd& u, int step, Eigen::Vector
     char* flags = active_set ? active_set->data() + first : nullptr;
     first += model_.contacts[c].nodes.size();
     if (!pair_active(ci, step)) continue;
-    if (model_.contacts[c].deformable()) assemble_deformable(ci, u, R, K, scale2, active, flags);
-    else assemble_rigid(ci, u, R, K, scale2, active, flags);
+    if (model_.contacts[c].deformable()) assemble_deformable(ci, u, R, K, scale2, active, flags, 0.0);
+    else assemble_rigid(ci, u, R, K, scale2, active, flags, 0.0);
+  }
+}
+
+void ContactAssembly::add_curvature(const Eigen::VectorXd& u, int step, double factor, TangentMatrix& K) const {
+  if (factor == 0) return;
+  Eigen::VectorXd R = Eigen::VectorXd::Zero(u.size());
+  double scale2 = 0;
+  int active = 0;
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const int ci = static_cast<int>(c);
+    if (!pair_active(ci, step)) continue;
+    if (model_.contacts[c].deformable()) assemble_deformable(ci, u, R, &K, scale2, active, nullptr, factor);
+    else assemble_rigid(ci, u, R, &K, scale2, active, nullptr, factor);
   }
 }
 
 void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K,
-                                     double& scale2, int& active, char* flags) const {
+                                     double& scale2, int& active, char* flags, double curvature) const {
   const ContactPair& pair = model_.contacts[c];
   const RigidSurface& rigid = model_.rigid_surfaces[pair.rigid];
   for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
@@ -136,6 +159,11 @@ void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::Vec
     Eigen::Matrix2d Kc;
     const ContactPoint cp = rigid_contact(rigid, xs, pair.areas[k], pair.law, f, K ? &Kc : nullptr);
     if (!cp.active) continue;
+    if (curvature != 0) {
+      Kc = curvature_part(f, Kc, pair.law, pair.areas[k], cp.gap, curvature);
+      for (int q = 0; q < 4; ++q) K->add(rigid_pos_[c][k][q], Kc(q / 2, q % 2));
+      continue;
+    }
     ++active;
     if (flags) flags[k] = 1;
     R.segment<2>(2 * n) += f;
@@ -148,7 +176,7 @@ void ContactAssembly::assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::Vec
 }
 
 void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K,
-                                          double& scale2, int& active, char* flags) const {
+                                          double& scale2, int& active, char* flags, double curvature) const {
   const ContactPair& pair = model_.contacts[c];
   const Eigen::Matrix2Xd chain = current_chain(pair.master, u);
   for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
@@ -156,12 +184,17 @@ void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen
     const Eigen::Vector2d xs = model_.X[s].head<2>() + u.segment<2>(2 * s);
     DeformableContactElement e;
     if (!deformable_element(pair, xs, chain, pair.areas[k], K != nullptr, e)) continue;
-    ++active;
-    if (flags) flags[k] = 1;
     // The contact element (slave, master nodes), DOFs (r, z) per node; −1: a ghost slot (no DOFs).
     std::array<int, 5> nodes{};
     nodes[0] = s;
     for (int j = 1; j < 5; ++j) nodes[j] = e.master[j - 1] < 0 ? -1 : pair.master[e.master[j - 1]];
+    if (curvature != 0) {
+      e.K = curvature_part(e.f, e.K, pair.law, pair.areas[k], e.point.gap, curvature);
+      scatter(nodes, e.K, *K);
+      continue;
+    }
+    ++active;
+    if (flags) flags[k] = 1;
     double x2 = xs.squaredNorm();
     for (int j = 1; j < 5; ++j)
       if (e.master[j - 1] >= 0) x2 = std::max(x2, chain.col(e.master[j - 1]).squaredNorm());
@@ -171,14 +204,18 @@ void ContactAssembly::assemble_deformable(int c, const Eigen::VectorXd& u, Eigen
     if (!K) continue;
     // The gap is a difference of the nodes' coordinates: round-off ~ε_mach max |x|.
     scale2 += e.K.squaredNorm() * x2;
-    const TangentLayout& layout = K->layout();
-    for (int b = 0; b < 10; ++b) {
-      if (nodes[b / 2] < 0) continue;
-      const int j = eq_[2 * nodes[b / 2] + b % 2];
-      if (j < 0) continue;
-      for (int a = 0; a < 10; ++a)
-        if (nodes[a / 2] >= 0) K->add(layout.entry(eq_[2 * nodes[a / 2] + a % 2], j), e.K(a, b));
-    }
+    scatter(nodes, e.K, *K);
+  }
+}
+
+void ContactAssembly::scatter(const std::array<int, 5>& nodes, const ContactMatrix10& Ke, TangentMatrix& K) const {
+  const TangentLayout& layout = K.layout();
+  for (int b = 0; b < 10; ++b) {
+    if (nodes[b / 2] < 0) continue;
+    const int j = eq_[2 * nodes[b / 2] + b % 2];
+    if (j < 0) continue;
+    for (int a = 0; a < 10; ++a)
+      if (nodes[a / 2] >= 0) K.add(layout.entry(eq_[2 * nodes[a / 2] + a % 2], j), Ke(a, b));
   }
 }
 

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "contact/axisym_contact.hpp"
+#include "contact/smooth_chain.hpp"
 #include "linalg/tangent_matrix.hpp"
 #include "model/model.hpp"
 
@@ -63,6 +64,11 @@ public:
   /// (their nodes inactive).
   void assemble(const Eigen::VectorXd& u, int step, Eigen::VectorXd& R, TangentMatrix* K, double& scale2,
                 int& active, std::vector<char>* active_set = nullptr) const;
+  /// K += factor · ε A_s g_N ∂²g_N/∂u² for every active slave node at u: the curvature part of each
+  /// contact element's tangent (theory manual (9.3), (9.10)), the element's K less its Gauss–Newton
+  /// part ε A_s ∂g_N/∂u ⊗ ∂g_N/∂u = f⊗f/(ε A_s g_N²). With factor −1 it leaves the Gauss–Newton
+  /// tangent of the contact, positive semidefinite whatever the penetration.
+  void add_curvature(const Eigen::VectorXd& u, int step, double factor, TangentMatrix& K) const;
   /// Whether pair `c` takes part in step `step`: every part holding one of its slave or master
   /// nodes has entered.
   bool pair_active(int c, int step) const { return step >= pair_enter_[c]; }
@@ -76,10 +82,14 @@ public:
 
 private:
   /// `flags`, if given: one per slave node of pair c, set to 1 for the active ones.
+  /// `curvature` ≠ 0: only factor `curvature` times the curvature part of each element goes to K (R,
+  /// scale2, active and flags untouched).
   void assemble_rigid(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K, double& scale2,
-                      int& active, char* flags) const;
+                      int& active, char* flags, double curvature) const;
   void assemble_deformable(int c, const Eigen::VectorXd& u, Eigen::VectorXd& R, TangentMatrix* K, double& scale2,
-                           int& active, char* flags) const;
+                           int& active, char* flags, double curvature) const;
+  /// K += Ke over the free DOFs of a contact element's nodes (slave, up to four master nodes; −1: none).
+  void scatter(const std::array<int, 5>& nodes, const ContactMatrix10& Ke, TangentMatrix& K) const;
   /// Current positions of a chain of nodes (columns (r, z)).
   Eigen::Matrix2Xd current_chain(const std::vector<int>& nodes, const Eigen::VectorXd& u) const;
 

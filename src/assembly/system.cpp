@@ -299,6 +299,11 @@ Eigen::VectorXd System::add_slack_stiffness(double theta, int step, const Eigen:
   return Kd;
 }
 
+void System::add_contact_curvature(const Eigen::VectorXd& u, const LoadState& loads, double factor,
+                                   TangentMatrix& K) const {
+  contact_->add_curvature(u, loads.step, factor, K);
+}
+
 std::vector<ContactNodeState> System::contact_states(const Eigen::VectorXd& u, int c, int step) const {
   return contact_->states(u, c, step);
 }

@@ -98,6 +98,10 @@ public:
   /// element of an active part, T̄ = c μ₀ H (c = 0.1, system.cpp) (μ₀ the material's shear modulus at rest,
   /// H the part's thickness), and returns K₀ d (all DOFs; d over all DOFs, or empty for none).
   Eigen::VectorXd add_slack_stiffness(double theta, int step, const Eigen::VectorXd& d, TangentMatrix& K) const;
+  /// K += factor × the curvature part ε A_s g_N ∂²g_N/∂u² of every active contact element at u
+  /// (ContactAssembly::add_curvature): factor −1 turns the contact's share of an assembled tangent
+  /// into its Gauss–Newton part (theory manual (9.10)).
+  void add_contact_curvature(const Eigen::VectorXd& u, const LoadState& loads, double factor, TangentMatrix& K) const;
   /// Contact state of every slave node of contact pair `c` at u in step `step` (0-based), in the
   /// pair's node order; inactive while the pair waits for one of its parts to enter.
   std::vector<ContactNodeState> contact_states(const Eigen::VectorXd& u, int c, int step) const;

@@ -22,10 +22,10 @@ ContactPoint state(double gap, const ContactLaw& law, double area, double xi, co
   p.gap = gap;
   p.xi = xi;
   p.normal = normal;
-  p.active = gap < 0;
+  p.active = law.touching(gap);
   if (p.active) {
-    p.pressure = -law.penalty * gap;
-    p.energy = 0.5 * law.penalty * gap * gap * area;
+    p.pressure = law.pressure(gap);
+    p.energy = law.energy(gap) * area;
   }
   return p;
 }
@@ -46,15 +46,16 @@ ContactPoint node_to_segment(const Eigen::Vector2d& xs, const Eigen::Vector2d& x
   if (K) K->setZero();
   if (!p.active) return p;
 
-  const double gN = p.gap, eA = law.penalty * area;
+  // f = −A_s p N, K = A_s [p′ N⊗N − p Δδg_N] (p′ = dp/d(−g_N); ε and ε g_N's negative unsmoothed).
+  const double pA = p.pressure * area, kA = law.stiffness(p.gap) * area;
   ContactVector6 N, T, D;
   N << n, -(1 - xi) * n, -xi * n;
   T << t, -(1 - xi) * t, -xi * t;
   D << 0, 0, -n, n;
-  f = eA * gN * N;
+  f = -pA * N;
   if (K) {
     const ContactMatrix6 TD = T * D.transpose();
-    *K = eA * (N * N.transpose() - (gN / l) * (TD + TD.transpose()) - (gN * g / (l * l)) * D * D.transpose());
+    *K = kA * N * N.transpose() + (pA / l) * (TD + TD.transpose()) + (pA * g / (l * l)) * D * D.transpose();
   }
   return p;
 }
@@ -67,20 +68,20 @@ ContactPoint node_to_vertex(const Eigen::Vector2d& xs, const Eigen::Vector2d& xv
   f.setZero();
   if (K) K->setZero();
   const double gN = sigma * d - law.offset;
-  if (!(gN < 0)) return state(gN, law, area, 0, d > 0 ? Eigen::Vector2d(sigma * r / d) : Eigen::Vector2d::Zero());
+  if (!law.touching(gN)) return state(gN, law, area, 0, d > 0 ? Eigen::Vector2d(sigma * r / d) : Eigen::Vector2d::Zero());
   if (!(d > 0)) throw std::domain_error("contact: slave node on a master vertex (contact direction undefined)");
   const Eigen::Vector2d e = r / d;
   const ContactPoint p = state(gN, law, area, 0, sigma * e);
 
-  const double eA = law.penalty * area;
+  const double pA = p.pressure * area, kA = law.stiffness(gN) * area;
   Eigen::Vector4d G;
   G << sigma * e, -sigma * e;
-  f = eA * gN * G;
+  f = -pA * G;
   if (K) {
     const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - e * e.transpose();
     Eigen::Matrix4d H;
     H << P, -P, -P, P;
-    *K = eA * (G * G.transpose() + (gN * sigma / d) * H);
+    *K = kA * G * G.transpose() - (pA * sigma / d) * H;
   }
   return p;
 }

@@ -56,18 +56,46 @@ namespace tunica {
 using ContactVector6 = Eigen::Matrix<double, 6, 1>;
 using ContactMatrix6 = Eigen::Matrix<double, 6, 6>;
 
-/// The penalty law of a contact pair.
+/// The penalty law of a contact pair, theory manual (9.2): the contact pressure p(g_N) per reference
+/// area, ε⟨−g_N⟩ for δ = 0; with the smoothing width δ > 0 the quadratic blend
+///   p = ε (δ/2 − g_N)²/(2δ) for |g_N| < δ/2,  ε(−g_N) below, 0 above,
+/// C¹ across the touch, equal to the plain law beyond a penetration of δ/2.
 struct ContactLaw {
-  double penalty = 0;  ///< ε > 0 [force/length³]: contact pressure per unit penetration
-  double offset = 0;   ///< c ≥ 0 [length]: g_N = s − c (e.g. half the thicknesses of membrane mid-surfaces)
+  double penalty = 0;    ///< ε > 0 [force/length³]: contact pressure per unit penetration
+  double offset = 0;     ///< c ≥ 0 [length]: g_N = s − c (e.g. half the thicknesses of membrane mid-surfaces)
+  double smoothing = 0;  ///< δ ≥ 0 [length]: width of the blend around g_N = 0
+
+  /// Whether a node at gap g_N feels the surface: g_N < δ/2.
+  bool touching(double gap) const { return gap < 0.5 * smoothing; }
+  /// p(g_N) [force/length²].
+  double pressure(double gap) const {
+    const double h = 0.5 * smoothing;
+    if (!(gap < h)) return 0;
+    if (gap <= -h) return -penalty * gap;
+    return penalty * (h - gap) * (h - gap) / (2 * smoothing);
+  }
+  /// dp/d(−g_N) [force/length³].
+  double stiffness(double gap) const {
+    const double h = 0.5 * smoothing;
+    if (!(gap < h)) return 0;
+    if (gap <= -h) return penalty;
+    return penalty * (h - gap) / smoothing;
+  }
+  /// Π/A_s = ∫ p d(−g_N) [force/length].
+  double energy(double gap) const {
+    const double h = 0.5 * smoothing;
+    if (!(gap < h)) return 0;
+    if (gap <= -h) return 0.5 * penalty * gap * gap + penalty * smoothing * smoothing / 24;
+    return penalty * (h - gap) * (h - gap) * (h - gap) / (6 * smoothing);
+  }
 };
 
 /// The state of one contact node, for output.
 struct ContactPoint {
   bool active = false;
   double gap = 0;       ///< g_N [length] (negative: penetration)
-  double pressure = 0;  ///< p_c = ε⟨−g_N⟩ [force/length²]
-  double energy = 0;    ///< Π = ½ ε ⟨−g_N⟩² A_s [force·length]
+  double pressure = 0;  ///< p_c = p(g_N) (ε⟨−g_N⟩ without smoothing) [force/length²]
+  double energy = 0;    ///< Π = A_s ∫ p d(−g_N) (½ ε ⟨−g_N⟩² A_s without smoothing) [force·length]
   double xi = 0;        ///< projection parameter on the master segment (0 for a cylinder)
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();  ///< unit normal towards the slave's side; force on the slave = p_c A_s normal
 };

@@ -9,15 +9,14 @@ ContactPoint rigid_cylinder_contact(const RigidCylinder& cylinder, const Eigen::
   ContactPoint p;
   p.gap = sigma * (xs(0) - cylinder.radius) - law.offset;
   p.normal = n;
-  p.active = p.gap < 0;
+  p.active = law.touching(p.gap);
   f.setZero();
   if (K) K->setZero();
   if (!p.active) return p;
-  const double eA = law.penalty * area;
-  p.pressure = -law.penalty * p.gap;
-  p.energy = 0.5 * eA * p.gap * p.gap;
-  f = eA * p.gap * n;
-  if (K) *K = eA * n * n.transpose();
+  p.pressure = law.pressure(p.gap);
+  p.energy = law.energy(p.gap) * area;
+  f = -p.pressure * area * n;
+  if (K) *K = law.stiffness(p.gap) * area * n * n.transpose();
   return p;
 }
 

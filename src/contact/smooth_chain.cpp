@@ -154,7 +154,7 @@ ContactPoint smooth_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Ei
   p.normal = Eigen::Vector2d(c0.d[1], -c0.d[0]) / l0;
   p.gap = (xs - Eigen::Vector2d(c0.c[0], c0.c[1])).dot(p.normal) - law.offset;
   // Open at ξ (the common case): no jets. Else the state is taken from the jet below.
-  if (!(p.gap < 0)) return p;
+  if (!law.touching(p.gap)) return p;
 
   // Independent variables y = (x_s, window slots 0–3); a ghost slot's variables stay unused.
   double Qv[4][2];
@@ -182,14 +182,15 @@ ContactPoint smooth_contact(const Eigen::Vector2d& xs, const Eigen::Ref<const Ei
   // State, force and tangent all from this g_N, so the energy and its derivatives agree even if
   // the given ξ was not converged to the last bit.
   p.gap = g.v;
-  p.active = g.v < 0;
+  p.active = law.touching(g.v);
   p.normal = Eigen::Vector2d(c.d[1].v, -c.d[0].v).normalized();
   if (!p.active) return p;
-  p.pressure = -law.penalty * g.v;
-  p.energy = 0.5 * law.penalty * g.v * g.v * area;
-  const double eA = law.penalty * area;
-  f = eA * g.v * g.g;
-  if (K) *K = eA * (g.g * g.g.transpose() + g.v * g.h);
+  p.pressure = law.pressure(g.v);
+  p.energy = law.energy(g.v) * area;
+  // f = −A_s p ∂g_N/∂y, K = A_s (p′ ∂g_N/∂y ⊗ ∂g_N/∂y − p ∂²g_N/∂y²), theory manual (9.3).
+  const double pA = p.pressure * area, kA = law.stiffness(g.v) * area;
+  f = -pA * g.g;
+  if (K) *K = kA * g.g * g.g.transpose() - pA * g.h;
   return p;
 }
 

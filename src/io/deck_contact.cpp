@@ -48,7 +48,7 @@ const ComponentSpec& contact_spec() {
       "of `rigid` and `master`). Each slave node s stands for its tributary reference area A_s = 2π R_s "
       "(L_left + L_right)/2 (a node on the axis, a pole: its consistent area 2π L R_next/6 per element, as a pressure load weighs it; rigid pairs: on the slave part's meridian; deformable pairs: on the slave chain "
       "itself, the part's meridian or the node set in its order) and has the energy ½ ε ⟨−g_N⟩² A_s, g_N = "
-      "(signed distance to the surface) − offset; it is active when g_N < 0. A deformable master's normal is "
+      "(signed distance to the surface) − offset; it is active when g_N < 0 (with `smoothing` δ: g_N < δ/2). A deformable master's normal is "
       "its direction of travel turned clockwise (a chain running towards +z faces +r): the slave must be on "
       "that side, or give `master_orientation: reversed` (a slave node behind the master at the reference state is an error). Slave nodes push on the master surface at "
       "their closest point (one pass: master nodes may enter the slave; `passes: 2` adds the reverse pass): by default the C¹ curve through the master's "
@@ -82,6 +82,16 @@ const ComponentSpec& contact_spec() {
                                      1),
                             2),
                     "1"),
+       with_default(at_least(number("smoothing", Dimension::length,
+                                    "δ: width of the blend that makes the contact pressure C¹ across the touch: p = "
+                                    "ε (δ/2 − g_N)²/(2δ) for |g_N| < δ/2, ε⟨−g_N⟩ beyond (theory manual (9.2)). 0: "
+                                    "the plain law. Where nodes at the edge of the contact zone, whose pressure is "
+                                    "about zero, enter and leave at every Newton iteration (a compliant balloon "
+                                    "spreading along a vessel), about 10⁻³ of the slave's element length settles "
+                                    "them; the contact pressure differs from the plain law's only where it is below "
+                                    "ε δ/2"),
+                             0.0),
+                    "0"),
        with_default(at_least(number("offset", Dimension::length,
                                     "c: contact starts at the distance c from the surface (e.g. half a thickness; "
                                     "two membranes: the sum of their half thicknesses)"),
@@ -316,6 +326,30 @@ void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c,
   set_chain_areas(c, m);
 }
 
+/// The smoothing width of pair `c` (theory manual (9.2)), refused beyond a tenth of its slave
+/// chain's mean reference element length: the blend would press nodes from δ/2 away and change the
+/// contact pressure wherever it is below εδ/2.
+double read_smoothing(const Params& p, const ContactPair& c, const Model& m) {
+  const double delta = p.number("smoothing");
+  if (!(delta > 0) || c.area_chain.size() < 2) return delta;
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < c.area_chain.size(); ++i)
+    length += (m.X[c.area_chain[i + 1]] - m.X[c.area_chain[i]]).norm();
+  length /= static_cast<double>(c.area_chain.size() - 1);
+  if (delta <= 0.1 * length) return delta;
+  const std::string lu = m.units.display_unit(Dimension::length);
+  const auto in = [&](double v) { return m.units.from_internal(v, lu, Dimension::length); };
+  p.fail("smoothing",
+         fmt::format("contact pair '{}': the smoothing, {:.4g} {}, is more than a tenth of the slave's mean element "
+                     "length ({:.4g} {}): its nodes would be pressed from δ/2 = {:.4g} {} off the surface, and the "
+                     "contact pressure would differ from the penalty law's wherever it is below εδ/2 = {:.4g} kPa. "
+                     "Give about 10⁻³ of the element length, `smoothing: {:.2g} {}` (is the unit the deck's?)",
+                     c.name, in(delta), lu, in(length), lu, in(0.5 * delta), lu,
+                     m.units.from_internal(0.5 * c.law.penalty * delta, "kPa", Dimension::pressure), in(1e-3 * length),
+                     lu));
+  return delta;
+}
+
 }  // namespace
 
 void read_contacts(const DeckNode& deck, Model& m) {
@@ -353,6 +387,7 @@ void read_contacts(const DeckNode& deck, Model& m) {
         p.fail("rigid", "undefined rigid surface '" + r + "' " + known_names(r, names_of(m.rigid_surfaces), "rigid surfaces"));
       c.rigid = static_cast<int>(it - m.rigid_surfaces.begin());
       read_rigid_slave(p, c, m);
+      c.law.smoothing = read_smoothing(p, c, m);
       check_rigid_side(p, c, m);
       const RigidSurface& surface = m.rigid_surfaces[c.rigid];
       check_contact_offset(
@@ -361,6 +396,7 @@ void read_contacts(const DeckNode& deck, Model& m) {
     } else {
       int master_part = -1;
       read_deformable_pair(node, p, c, m, &master_part);
+      c.law.smoothing = read_smoothing(p, c, m);
       c.master_surface = p.text("master_surface") == "faceted" ? ContactPair::MasterSurface::faceted
                                                                 : ContactPair::MasterSurface::smooth;
       if (p.integer("passes") == 2) {

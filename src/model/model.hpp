@@ -206,7 +206,7 @@ struct ContactPair {
   enum class MasterSurface { faceted, smooth } master_surface = MasterSurface::smooth;
   ContactLaw law;
   SourceLocation where;
-  /// Two-pass contact of a deformable pair (`passes: 2`, theory manual §9.1, (9.10)): each pass has
+  /// Two-pass contact of a deformable pair (`passes: 2`, theory manual §9.1, (9.9)): each pass has
   /// half the pair's penalty, and the reverse pass (slave and master swapped) follows the pair in
   /// Model::contacts as an ordinary pair. `reverse`: that entry's index, else −1.
   int reverse = -1;

@@ -299,7 +299,18 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
             part >= 0 && part < static_cast<int>(model.parts.size()) ? model.parts[part].material : nullptr;
         const auto target_kpa = kpa(target->second);
         std::string beyond_max;
-        if (material && material->type() == "neo_hookean")
+        // A slave of a contact pair can snap through onto its surface, which then carries the rest.
+        std::string touching;
+        for (const ContactPair& pair : model.contacts)
+          if (!pair.is_reverse_pass() && pair.part == part && touching.empty())
+            touching = fmt::format("contact pair '{}'", pair.name);
+        if (!touching.empty())
+          beyond_max = fmt::format(
+              "Beyond the maximum part '{}' may snap through onto the surface of {}, which then carries the rest: "
+              "the {:.4g} kPa the failed increment tried and the step's target, {:.4g} kPa, may be carried there, "
+              "which pressure control cannot reach from here",
+              model.parts[part].name, touching, kpa(tried), target_kpa);
+        else if (material && material->type() == "neo_hookean")
           beyond_max = fmt::format(
               "Its material (neo_hookean) does not stiffen: beyond the maximum the pressure falls (a balloon) or "
               "approaches an asymptote (a tube at fixed length), so likely no state carries the {:.4g} kPa the failed "
@@ -543,6 +554,14 @@ double largest_tension(const System& system, const Eigen::VectorXd& u, int part,
   return t;
 }
 
+/// The mean length of a chain's segments at the reference state (0 for fewer than 2 nodes).
+double mean_segment(const Model& m, const std::vector<int>& chain) {
+  if (chain.size() < 2) return 0;
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i) length += (m.X[chain[i + 1]] - m.X[chain[i]]).norm();
+  return length / static_cast<double>(chain.size() - 1);
+}
+
 /// The membrane part that holds the first node of a chain, or −1.
 int part_of_chain(const Model& m, const std::vector<int>& chain) {
   if (chain.empty()) return -1;
@@ -572,6 +591,17 @@ std::string contact_convergence_hint(const System& system, const Eigen::VectorXd
   std::string names;
   for (std::size_t k = 0; k < pairs.size(); ++k)
     names += fmt::format("{}'{}'", k == 0 ? "" : k + 1 == pairs.size() ? " and " : ", ", m.contacts[pairs[k]].name);
+  // Contact near at the last converged state: some slave node within its chain's mean element
+  // length of its surface. A failed attempt that found nodes in contact from far away diverged
+  // first; its contact is a symptom.
+  bool near = false;
+  for (int c : pairs) {
+    const ContactPair& pair = m.contacts[c];
+    const double length = mean_segment(m, pair.area_chain);
+    for (const ContactNodeState& s : system.contact_states(u, c, step_index))
+      near = near || (s.point.normal.squaredNorm() > 0 && s.point.gap < length);
+  }
+  if (!near) return "";
   const bool contact_in_play = last.active_contacts > 0 || last.active_set_changes > 0;
   std::string slack;
   for (int c : pairs) {
@@ -598,29 +628,48 @@ std::string contact_convergence_hint(const System& system, const Eigen::VectorXd
   }
   // Volume control takes the bordered correction (7.5) whole: no line search (7.4) halves one that
   // drives slave nodes deep into the surface, whose penalty forces (9.3) then overflow the residual.
-  if (step.volume_control.load >= 0 && contact_in_play && last.failure == "the residual is not finite")
+  if (step.volume_control.load >= 0 && contact_in_play &&
+      (last.failure == "the residual is not finite" || last.failure == "diverging"))
     return fmt::format(
         " Hint: under volume control each correction is taken whole (no line search halves it, theory manual (7.5)), "
         "and with contact pair(s) {} active ({} slave node(s) at the last iterate, the active set changed at {} of its "
-        "{} iterations) a correction drove slave nodes deep into their surface, where the penalty forces grew until "
-        "the residual was no longer finite.{} A smaller `penalty` makes the contact softer, at the price of a deeper "
+        "{} iterations) a correction drove slave nodes deep into their surface, where the penalty forces grew without "
+        "bound.{} A smaller `penalty` makes the contact softer, at the price of a deeper "
         "penetration (p_c/ε, user guide §3.2, choosing ε); more `increments` in this step push the contact less far "
         "in each volume step.",
         names, last.active_contacts, last.active_set_changes, last.iterations, slack);
   // Chattering, or contact on a master without tension (whose nodes a full correction moves in
   // and out of contact even when the line search keeps the active set).
   if (last.active_set_changes < kContactChatterIterations && (slack.empty() || last.active_contacts == 0)) return "";
-  bool deformable = false;
-  for (int c : pairs) deformable = deformable || m.contacts[c].deformable();
+  bool deformable = false, one_pass = false;
+  for (int c : pairs) {
+    deformable = deformable || m.contacts[c].deformable();
+    one_pass = one_pass || (m.contacts[c].deformable() && m.contacts[c].reverse < 0);
+  }
+  // A pair without smoothing: the C¹ blend (9.2) of about 10⁻³ of its slave's element length.
+  std::string smoothing;
+  for (int c : pairs) {
+    const ContactPair& pair = m.contacts[c];
+    if (pair.law.smoothing > 0 || pair.area_chain.size() < 2) continue;
+    const double length = mean_segment(m, pair.area_chain);
+    const std::string lu = m.units.display_unit(Dimension::length);
+    smoothing = fmt::format(
+        "`smoothing: {:.2g} {}` on pair '{}' (10⁻³ of its slave's mean element length) makes the contact pressure C¹ "
+        "across the touch, so that nodes at the edge of the contact zone, where the pressure is about zero, stop "
+        "entering and leaving (theory manual (9.2)). ",
+        m.units.from_internal(1e-3 * length, lu, Dimension::length), lu, pair.name);
+    break;
+  }
   return fmt::format(
       " Hint: the failed attempt had slave nodes in contact ({} at its last iterate, pair(s) {}), and the contact "
       "active set changed at {} of its {} iterations: Newton did not settle which slave nodes touch, and cutting "
-      "the increment back did not help.{} {}A smaller `penalty` makes the contact softer, at the price of a deeper "
+      "the increment back did not help.{} {}{}A smaller `penalty` makes the contact softer, at the price of a deeper "
       "penetration (p_c/ε, user guide §3.2, choosing ε).",
-      last.active_contacts, names, last.active_set_changes, last.iterations, slack,
-      deformable ? "For a deformable pair, `passes: 2` holds the master's nodes off the slave too, and a finer slave "
-                   "mesh spreads the contact over more nodes (theory manual §9.1). "
-                 : "");
+      last.active_contacts, names, last.active_set_changes, last.iterations, slack, smoothing,
+      one_pass     ? "For a deformable pair, `passes: 2` holds the master's nodes off the slave too, and a finer slave "
+                     "mesh spreads the contact over more nodes (theory manual §9.1). "
+      : deformable ? "A finer slave mesh spreads the contact over more nodes (theory manual §9.1). "
+                   : "");
 }
 
 }  // namespace tunica

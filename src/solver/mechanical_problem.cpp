@@ -36,6 +36,9 @@ double MechanicalProblem::evaluate(Eigen::VectorXd& r) {
 }
 
 const TangentMatrix& MechanicalProblem::jacobian(int iteration) {
+  // Slave nodes that entered contact at this evaluation came in by a correction that did not see
+  // them, often deep: the Gauss–Newton contact tangent, theory manual (9.10).
+  if (nodes_entered_) system_.add_contact_curvature(u_, loads_, -1.0, K_);
   for (auto& hook : hooks_) hook->apply(iteration, K_);
   return K_;
 }
@@ -50,6 +53,7 @@ void MechanicalProblem::describe(IterationRecord& rec) {
   // The active set's changes since the previous kept residual (nodes entering plus leaving).
   if (previous_set_.size() == active_set_.size())
     for (std::size_t i = 0; i < active_set_.size(); ++i) rec.active_changes += active_set_[i] != previous_set_[i];
+  nodes_entered_ = entering_contact() > 0;
   previous_set_.swap(active_set_);
 }
 

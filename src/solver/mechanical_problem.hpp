@@ -2,7 +2,8 @@
 // The equilibrium of one load increment as a NonlinearProblem (theory manual (7.1)): the
 // unknowns are the free DOFs of u (prescribed DOFs already set), the residual R_f(u) and the
 // tangent K_ff = ∂R_f/∂u_f come from System::assemble at fixed loads. It tracks the contact
-// active set for the record and applies its tangent hooks (solver/tangent_hooks.hpp).
+// active set for the record, takes the Gauss–Newton contact tangent where slave nodes enter it
+// (theory manual (9.10)) and applies its tangent hooks (solver/tangent_hooks.hpp).
 #include <memory>
 #include <vector>
 
@@ -54,6 +55,7 @@ private:
   double max_correction_ = 0;
   int active_contacts_ = 0;
   std::vector<char> active_set_, previous_set_;  // contact active set at this / the previous kept residual
+  bool nodes_entered_ = false;                     // slave nodes entered contact at the last kept residual
 };
 
 }  // namespace tunica

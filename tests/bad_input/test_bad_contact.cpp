@@ -157,3 +157,17 @@ TEST(BadContact, SlaveOnTheSurfaceOrAFewNodesJustBehindIsAccepted) {
   const Outcome o = run_cli("check " + write_deck("few-just-behind", text));
   EXPECT_EQ(o.exit_code, 0) << o.output;
 }
+
+TEST(BadContact, ASmoothingBeyondATenthOfTheElementLengthNamesTheValueToGive) {
+  // The rat aorta's wall: 40 elements over its meridian; a smoothing of a metre, the unit typo.
+  expect_error("smoothing-metres", "offset: 0.01 mm}", "offset: 0.01 mm, smoothing: 0.1 m}",
+               "contact.wall_sleeve.smoothing", "is more than a tenth of the slave's mean element length");
+  expect_error("smoothing-negative", "offset: 0.01 mm}", "offset: 0.01 mm, smoothing: -1e-4 mm}",
+               "contact.wall_sleeve.smoothing", "smoothing");
+}
+
+TEST(BadContact, ASmallSmoothingIsValid) {
+  const Outcome o = run_cli(
+      "check " + write_deck("smoothing-ok", replace(base_deck(), "offset: 0.01 mm}", "offset: 0.01 mm, smoothing: 1e-4 mm}")));
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+}

@@ -1,12 +1,12 @@
 // What a run that stops with contact in play says (solver/failure_hints.hpp,
 // contact_convergence_hint; user guide §6):
 // - a Mooney–Rivlin balloon (ends held at r = 1.2 mm) inflated by pressure against a Fung artery
-//   that carries no tension yet (no prestretch): Newton stalls where they first touch at every
-//   increment size, and the stop names the slack master and the fixes (its tension first, two
-//   passes, a finer slave, a smaller penalty); the same model with the artery prestretched by 5 %
-//   in a step before reaches the target;
+//   that carries no tension yet (no prestretch): it reaches the target with the Gauss–Newton contact
+//   tangent of the iterations where slave nodes enter contact (theory manual (9.10));
 // - the same pair under volume control: the correction, taken whole, drives the balloon's nodes
-//   into the artery until the residual is not finite, and the stop says why and what to change.
+//   into the artery until the residual grows without bound, and the stop says why and what to change;
+// - a compliant capsule filled under volume control inside an artery: the edge of its contact zone
+//   chatters, and the stop names the `smoothing` (9.2) with which it fills the artery.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -70,14 +70,17 @@ std::string stop_message(const std::string& deck) {
 
 }  // namespace
 
-TEST(ContactHints, ASlackMasterThatStallsNewtonIsNamedWithItsFixes) {
-  const std::string what = stop_message(balloon_in_artery("  - {name: inflation, increments: 20, set: {inflation: 200 kPa}}"));
-  ASSERT_FALSE(what.empty()) << "the run converged";
-  EXPECT_NE(what.find("Hint: the failed attempt had slave nodes in contact"), std::string::npos) << what;
-  EXPECT_NE(what.find("part 'artery', carries almost no tension"), std::string::npos) << what;
-  EXPECT_NE(what.find("axial prestretch"), std::string::npos) << what;
-  EXPECT_NE(what.find("`passes: 2`"), std::string::npos) << what;
-  EXPECT_NE(what.find("smaller `penalty`"), std::string::npos) << what;
+TEST(ContactHints, ASlackMasterReachesTheTargetWithTheGaussNewtonContactTangent) {
+  // Slave nodes that enter contact come in deep, and the exact tangent's curvature terms (in g_N)
+  // made it indefinite there: Newton stalled at the first touch. The Gauss–Newton contact tangent
+  // of those iterations (theory manual (9.10)) reaches the target.
+  const Model m = read_deck_text(balloon_in_artery("  - {name: inflation, increments: 20, set: {inflation: 200 kPa}}"),
+                                 "slack.yaml");
+  Capture c;
+  Analysis a(m);
+  ASSERT_NO_THROW(a.run(c));
+  EXPECT_NEAR(c.rows.back().values[0], 200.0, 1e-9);
+  EXPECT_GT(c.rows.back().values[1], 0.0);  // in contact at the end (after cut-backs at the first touch)
 }
 
 TEST(ContactHints, TheSameModelWithTheArteryPrestretchedReachesTheTarget) {
@@ -91,14 +94,87 @@ TEST(ContactHints, TheSameModelWithTheArteryPrestretchedReachesTheTarget) {
   EXPECT_GT(c.rows.back().values[1], 0.0);  // in contact at the end
 }
 
-TEST(ContactHints, ANonFiniteResidualUnderVolumeControlWithContactSaysWhy) {
+TEST(ContactHints, AVolumeControlThatDrivesTheSlaveIntoASlackMasterSaysWhy) {
   const std::string what = stop_message(balloon_in_artery(
       "  - {name: start, increments: 2, set: {inflation: 20 kPa}}\n"
       "  - {name: inflation, increments: 20, volume_control: {load: inflation, volume: 45 mm^3}}"));
   ASSERT_FALSE(what.empty()) << "the run converged";
-  ASSERT_NE(what.find("the residual is not finite"), std::string::npos) << what;
+  ASSERT_TRUE(what.find("the residual is not finite") != std::string::npos || what.find("diverging") != std::string::npos)
+      << what;
   EXPECT_NE(what.find("Hint: under volume control each correction is taken whole"), std::string::npos) << what;
   EXPECT_NE(what.find("'balloon_artery'"), std::string::npos) << what;
+  EXPECT_NE(what.find("part 'artery', carries almost no tension"), std::string::npos) << what;
+  EXPECT_NE(what.find("axial prestretch"), std::string::npos) << what;
   EXPECT_NE(what.find("smaller `penalty`"), std::string::npos) << what;
   EXPECT_NE(what.find("more `increments`"), std::string::npos) << what;
+}
+
+namespace {
+
+/// A compliant Mooney–Rivlin capsule (R 1 mm, a 6 mm cylinder between hemispherical caps) filled
+/// under volume control inside a prestretched Fung artery: past its pressure maximum the capsule
+/// spreads along the artery at a nearly constant pressure, and the nodes at the edge of the contact
+/// zone carry almost no pressure. `smoothing`: the pair's extra key ("" for none).
+std::string capsule_in_artery(const std::string& smoothing) {
+  return R"(title: compliant capsule filling an artery
+units: {length: mm, force: N}
+materials:
+  artery: {type: fung, c: 40 kPa, a1: 1.0, a2: 0.8, a4: 0.1}
+  balloon: {type: mooney_rivlin, b1: 0.5 MPa, b2: 0.05 MPa}
+parts:
+  artery:
+    element: axisymmetric_membrane
+    material: artery
+    thickness: 0.3 mm
+    mesh: {type: line, from: [1.6 mm, -2 mm], to: [1.6 mm, 10 mm], elements: 60}
+  balloon:
+    element: axisymmetric_membrane
+    material: balloon
+    thickness: 0.05 mm
+    mesh:
+      - {type: arc, center: [0 mm, 1 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, elements: 10}
+      - {type: line, from: [1 mm, 1 mm], to: [1 mm, 7 mm], elements: 30}
+      - {type: arc, center: [0 mm, 7 mm], radius: 1 mm, start_angle: 0 deg, end_angle: 90 deg, elements: 10}
+boundary:
+  a_base: {node_set: artery.start, dofs: [z]}
+  a_top: {node_set: artery.end, dofs: [z]}
+  b_south: {node_set: balloon.start, dofs: [r, z]}
+  b_north: {node_set: balloon.end, dofs: [r]}
+loads:
+  inflation: {type: pressure, part: balloon}
+contact:
+  b_a: {slave: balloon, master: artery, master_orientation: reversed, penalty: 1e3 N/mm^3, offset: 0.175 mm)" +
+         smoothing + R"(}
+steps:
+  - {name: prestretch, increments: 4, set: {a_top: 0.6 mm}}
+  - {name: dilate, increments: 20, volume_control: {load: inflation, volume: 70 mm^3}}
+output:
+  vtk: false
+  history:
+    - {quantity: pressure, load: inflation, unit: kPa}
+    - {quantity: contact_force, contact: b_a, unit: N}
+    - {quantity: volume, load: inflation, unit: mm^3}
+)";
+}
+
+}  // namespace
+
+TEST(ContactHints, AContactFrontThatChattersNamesTheSmoothingThatSettlesIt) {
+  const std::string what = stop_message(capsule_in_artery(""));
+  ASSERT_FALSE(what.empty()) << "the run converged";
+  EXPECT_NE(what.find("the contact active set changed at"), std::string::npos) << what;
+  // 10⁻³ of the capsule's mean element length, (π/2 + 6 + π/2)/50 mm.
+  EXPECT_NE(what.find("`smoothing: 0.00018 mm` on pair 'b_a'"), std::string::npos) << what;
+
+  // With the smoothing the hint names, the capsule fills the artery.
+  const Model m = read_deck_text(capsule_in_artery(", smoothing: 0.00018 mm"), "capsule.yaml");
+  Capture c;
+  Analysis a(m);
+  ASSERT_NO_THROW(a.run(c));
+  const auto& last = c.rows.back().values;
+  EXPECT_NEAR(last[2], 70.0, 1e-6 * 70);
+  EXPECT_GT(last[1], 0.1) << "the capsule presses on the artery";
+  // The pressure stays near the capsule's own maximum while it spreads (44.5 … 48.4 kPa).
+  EXPECT_GT(last[0], 44.0);
+  EXPECT_LT(last[0], 50.0);
 }
