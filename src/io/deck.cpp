@@ -936,6 +936,17 @@ void read_output(const DeckNode& deck, Model& m) {
         std::vector<std::string> pairs;
         for (const auto& x : m.contacts)
           if (!x.is_reverse_pass()) pairs.push_back(x.name);
+        // A rigid surface or a part given for the pair that uses it: name that pair.
+        std::string using_it;
+        for (const auto& x : m.contacts) {
+          if (x.is_reverse_pass() || !using_it.empty()) continue;
+          const bool rigid = x.rigid >= 0 && m.rigid_surfaces[x.rigid].name == c;
+          const bool part = (x.part >= 0 && m.parts[x.part].name == c) || x.master_name == c;
+          if (rigid || part)
+            using_it = fmt::format(": '{}' is {}, not a contact pair; the pair that uses it is `contact: {}`", c,
+                                   rigid ? "a rigid surface" : "a part in one", x.name);
+        }
+        if (!using_it.empty()) h.fail("contact", "undefined contact pair '" + c + "'" + using_it);
         h.fail("contact", "undefined contact pair '" + c + "' " + known_names(c, pairs, "contact pairs"));
       }
       r.contact = static_cast<int>(it - m.contacts.begin());

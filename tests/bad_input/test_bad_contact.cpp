@@ -106,6 +106,13 @@ TEST(BadContact, HistoryOfAnUnknownContactPair) {
                      "undefined contact pair 'nope'");
 }
 
+TEST(BadContact, HistoryNamingTheRigidSurfaceNamesThePairThatUsesIt) {
+  const std::string text =
+      replace(base_deck(), "  history:\n", "  history:\n    - {quantity: contact_force, contact: sleeve}\n");
+  expect_check_error(kScratch, "history-contact-rigid", text, "contact: sleeve}", "output.history[0].contact",
+                     "'sleeve' is a rigid surface, not a contact pair; the pair that uses it is `contact: wall_sleeve`");
+}
+
 // A rigid surface given the wrong way round: the slave starts behind it, and the penalty would push
 // it through in the first increment. Refused at the pair's `rigid`, with the depth and the fix.
 TEST(BadContact, SlaveBehindARigidCylinder) {
