@@ -256,6 +256,46 @@ output: {{vtk: false}}
 """
 
 
+def capsule_in_artery(prestretch):
+    """A compliant Mooney-Rivlin capsule (R 1 mm, H 0.05 mm, a 6 mm cylinder between hemispherical
+    caps) filled under volume control inside a Fung artery (R 1.6 mm): past its pressure maximum it
+    spreads along the artery at a nearly constant pressure (the edge of its contact zone carries
+    almost no pressure). `prestretch`: the artery's axial stretch first, else none (a slack master)."""
+    step = "  - {name: prestretch, increments: 4, set: {a_top: 0.6 mm}}\n" if prestretch else ""
+    return f"""title: campaign capsule filling an artery{'' if prestretch else ' without prestretch'}
+units: {{length: mm, force: N}}
+materials:
+  artery: {{type: fung, c: 40 kPa, a1: 1.0, a2: 0.8, a4: 0.1}}
+  balloon: {{type: mooney_rivlin, b1: 0.5 MPa, b2: 0.05 MPa}}
+parts:
+  artery:
+    element: axisymmetric_membrane
+    material: artery
+    thickness: 0.3 mm
+    mesh: {{type: line, from: [1.6 mm, -2 mm], to: [1.6 mm, 10 mm], elements: 60}}
+  balloon:
+    element: axisymmetric_membrane
+    material: balloon
+    thickness: 0.05 mm
+    mesh:
+      - {{type: arc, center: [0 mm, 1 mm], radius: 1 mm, start_angle: -90 deg, end_angle: 0 deg, elements: 10}}
+      - {{type: line, from: [1 mm, 1 mm], to: [1 mm, 7 mm], elements: 30}}
+      - {{type: arc, center: [0 mm, 7 mm], radius: 1 mm, start_angle: 0 deg, end_angle: 90 deg, elements: 10}}
+boundary:
+  a_base: {{node_set: artery.start, dofs: [z]}}
+  a_top: {{node_set: artery.end, dofs: [z]}}
+  b_south: {{node_set: balloon.start, dofs: [r, z]}}
+  b_north: {{node_set: balloon.end, dofs: [r]}}
+loads:
+  inflation: {{type: pressure, part: balloon}}
+contact:
+  b_a: {{slave: balloon, master: artery, master_orientation: reversed, penalty: 1e3 N/mm^3, offset: 0.175 mm}}
+steps:
+{step}  - {{name: dilate, increments: 20, volume_control: {{load: inflation, volume: 70 mm^3}}}}
+output: {{vtk: false}}
+"""
+
+
 def decks():
     out = {}
     for mat in MATERIALS:
@@ -289,6 +329,10 @@ def decks():
     # A balloon meeting a rigid sleeve with the guide's penalty and ten times it.
     out["balloon-sleeve-penalty-1e5"] = balloon_sleeve("1e5")
     out["balloon-sleeve-penalty-1e6"] = balloon_sleeve("1e6")
+    # A compliant capsule filled under volume control inside an artery, with and without the
+    # artery's prestretch (the sixteenth docs-only trial's deck): its contact front chatters.
+    out["capsule-artery-volume-prestretched"] = capsule_in_artery(True)
+    out["capsule-artery-volume-slack"] = capsule_in_artery(False)
     # The shipped examples as they are, and the angioplasty balloon made softer.
     here = os.path.dirname(os.path.abspath(__file__))
     examples = os.path.join(here, "..", "..", "examples")

@@ -53,17 +53,36 @@ std::string far_penetration_warning(const System& system, const Eigen::VectorXd&
       pair.deformable() ? "`master_orientation`"
       : m.rigid_surfaces[pair.rigid].type == RigidSurface::Type::cylinder ? "the cylinder's `side`"
                                                                            : "the polyline's point order";
+  const std::string sunk = fmt::format(
+      "contact pair '{}': {}, the slave's {} has sunk {:.4g} {} into {}, {:.2g} of its element length {:.4g} {} "
+      "(contact pressure {:.4g} kPa against the penalty {:.4g} {})",
+      pair.name, when, node_label(m, pair.nodes[worst]), depth, len, surface, worst_ratio, worst_length, len,
+      m.units.from_internal(p.pressure, "kPa", Dimension::pressure), penalty, eps);
+  // A slave whose enclosed volume the step prescribes, against a rigid surface: a target beyond what
+  // fits inside it, not the penalty, sets how far it sinks in (a stiffer penalty raises the pressure).
+  const Step* st = step >= 0 && step < static_cast<int>(m.steps.size()) ? &m.steps[step] : nullptr;
+  if (st && !pair.deformable() && st->volume_control.load >= 0 &&
+      m.loads[st->volume_control.load].part == pair.part) {
+    const std::string vu = m.units.display_unit(Dimension::volume);
+    return format_location(
+        pair.where,
+        fmt::format("{}, and step '{}' prescribes the volume of load '{}' on the slave (`volume_control`, target "
+                    "{:.4g} {}). If the target is more than fits inside {}, the volume and not the penalty sets how "
+                    "deep the slave sinks (a larger `penalty` raises the pressure, not the depth): lower the step's "
+                    "`volume` target, or control the pressure instead. Otherwise raise `penalty` (to about {:.2g} {} "
+                    "for a penetration of 10⁻³ of the element length). The contact results there are not to be "
+                    "trusted.",
+                    sunk, st->name, m.loads[st->volume_control.load].name,
+                    m.units.from_internal(st->volume_control.target, vu, Dimension::volume), vu, surface, wanted,
+                    eps));
+  }
   return format_location(
       pair.where,
-      fmt::format("contact pair '{}': {}, the slave's {} has sunk {:.4g} {} into "
-                  "{}, {:.2g} of its element length {:.4g} {} (contact pressure {:.4g} kPa against the penalty {:.4g} "
-                  "{}), far more than a penalty should leave (the penetration p_c/ε should be small against the "
+      fmt::format("{}, far more than a penalty should leave (the penetration p_c/ε should be small against the "
                   "element length: user guide §3.2, choosing ε): the contact results there are not to be trusted. "
                   "Raise `penalty` (to about {:.2g} {} for a penetration of 10⁻³ of the element length); if the "
                   "slave should not press this hard on {} at all, check {}.",
-                  pair.name, when, node_label(m, pair.nodes[worst]), depth, len, surface, worst_ratio,
-                  worst_length, len, m.units.from_internal(p.pressure, "kPa", Dimension::pressure), penalty, eps,
-                  wanted, eps, surface, side));
+                  sunk, wanted, eps, surface, side));
 }
 
 }  // namespace tunica

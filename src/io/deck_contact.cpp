@@ -82,16 +82,17 @@ const ComponentSpec& contact_spec() {
                                      1),
                             2),
                     "1"),
-       with_default(at_least(number("smoothing", Dimension::length,
+       at_least(number("smoothing", Dimension::length,
                                     "δ: width of the blend that makes the contact pressure C¹ across the touch: p = "
                                     "ε (δ/2 − g_N)²/(2δ) for |g_N| < δ/2, ε⟨−g_N⟩ beyond (theory manual (9.2)). 0: "
                                     "the plain law. Where nodes at the edge of the contact zone, whose pressure is "
                                     "about zero, enter and leave at every Newton iteration (a compliant balloon "
                                     "spreading along a vessel), about 10⁻³ of the slave's element length settles "
                                     "them; the contact pressure differs from the plain law's only where it is below "
-                                    "ε δ/2"),
+                                    "ε δ/2. Not given: the plain law until an increment fails at its smallest size "
+                                    "with a chattering active set, then 10⁻³ of the slave's mean element length for "
+                                    "the rest of the run (the progress log says so)"),
                              0.0),
-                    "0"),
        with_default(at_least(number("offset", Dimension::length,
                                     "c: contact starts at the distance c from the surface (e.g. half a thickness; "
                                     "two membranes: the sum of their half thicknesses)"),
@@ -260,6 +261,7 @@ ContactPair reverse_pass(const Params& p, ContactPair& c, int master_part, const
   r.master_surface = c.master_surface;
   c.law.penalty *= 0.5;
   r.law = c.law;
+  r.auto_smoothing = c.auto_smoothing;
   set_chain_areas(r, m);
   // Orientation: Σ over the slave's nodes that face a master feature of n_slave·n_master (the
   // slave chain's normal in its order, (t_z, −t_r) with t the chord of its neighbours) < 0 keeps it.
@@ -330,7 +332,7 @@ void read_deformable_pair(const DeckNode& node, const Params& p, ContactPair& c,
 /// chain's mean reference element length: the blend would press nodes from δ/2 away and change the
 /// contact pressure wherever it is below εδ/2.
 double read_smoothing(const Params& p, const ContactPair& c, const Model& m) {
-  const double delta = p.number("smoothing");
+  const double delta = p.has("smoothing") ? p.number("smoothing") : 0.0;
   if (!(delta > 0) || c.area_chain.size() < 2) return delta;
   double length = 0;
   for (std::size_t i = 0; i + 1 < c.area_chain.size(); ++i)
@@ -367,6 +369,7 @@ void read_contacts(const DeckNode& deck, Model& m) {
     c.where = node.where();
     c.law.penalty = p.number("penalty");
     c.law.offset = p.number("offset");
+    c.auto_smoothing = !node.has("smoothing");
     const bool rigid = node.has("rigid"), master = node.has("master");
     if (rigid && master)
       p.fail("master", "a contact pair has either `rigid: <surface>` or `master: <part or node set>`, not both");

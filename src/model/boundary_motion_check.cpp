@@ -109,6 +109,26 @@ std::vector<MotionMisfit> boundary_motion_warnings(const Model& m) {
                                    in_len(mo.slo + mo.u), len)});
       return;
     }
+    // Away from another boundary that holds the DOF, by more than the model's whole extent in it:
+    // the wall between at least doubles its length, far beyond an artery's axial stretch (1.1 to 1.6).
+    if (!mo.toward && mo.other >= 0 && mo.hi > mo.lo && std::abs(mo.u) > mo.hi - mo.lo &&
+        !(axisymmetric && mo.dof == 0)) {
+      const char* dn = dof_name(m, mo.dof);
+      // A set on one plane away from the origin: the displacement that would put it where the value says.
+      const bool plane = mo.shi - mo.slo <= tol && std::abs(mo.slo) > tol;
+      out.push_back(
+          {mo.step, mo.boundary,
+           fmt::format("boundary '{}' moves {} of node set '{}' by {} in step '{}', away from boundary '{}', which "
+                       "holds {} on the other side: more than the model's whole extent in {} ({:.4g} {}), so the wall "
+                       "between is stretched at least {:.3g}-fold along {}, where arteries reach 1.1 to 1.6 axially. A "
+                       "boundary value is the displacement from the reference (user guide §3.1), not the position{}",
+                       bc.name, dn, set, value, step, m.boundaries[mo.other].name, dn, dn, in_len(mo.hi - mo.lo), len,
+                       1 + std::abs(mo.u) / (mo.hi - mo.lo), dn,
+                       plane ? fmt::format(": if the set (at {} = {:.4g} {}) is to end at {} = {}, the value is {:.4g} {}",
+                                           dn, in_len(mo.slo), len, dn, value, in_len(mo.u - mo.slo), len)
+                             : std::string(": check the value and its unit"))});
+      return;
+    }
     // Toward the other side, past all of the model's extent in the DOF, against another boundary.
     const bool past = mo.u < 0 ? mo.shi + mo.u < mo.lo - tol : mo.slo + mo.u > mo.hi + tol;
     if (!mo.toward || !past || mo.other < 0) return;

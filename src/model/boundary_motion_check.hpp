@@ -25,6 +25,9 @@ struct MotionMisfit {
 ///    far side of the middle of the model's extent in d and moves toward the other side, past
 ///    all of it), while another boundary holds d on nodes outside the set: the part between
 ///    them would have to pass through itself.
+///  - or (not r of an axisymmetric model) the set moves away from the other side by more than the
+///    model's whole extent in d while another boundary holds d on nodes outside the set: the wall
+///    between is stretched at least 1 + |u|/extent-fold (a position written as a displacement).
 /// And one per step value of a boundary that names two or more translational DOFs: the value
 /// moves the set by it along each (`dofs: [r, z]` with `1 mm` moves 1 mm out and 1 mm up), which
 /// is easily read as a motion along one.

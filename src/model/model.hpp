@@ -205,6 +205,10 @@ struct ContactPair {
   /// contact/axisym_contact.hpp) or with the C¹ curve through its nodes (contact/smooth_chain.hpp).
   enum class MasterSurface { faceted, smooth } master_surface = MasterSurface::smooth;
   ContactLaw law;
+  /// The deck gives the pair no `smoothing`: where an increment fails at its smallest size with a
+  /// chattering active set, the analysis smooths the law itself (theory manual (9.2),
+  /// solver/contact_chatter.hpp). `smoothing: 0` keeps the plain law.
+  bool auto_smoothing = true;
   SourceLocation where;
   /// Two-pass contact of a deformable pair (`passes: 2`, theory manual §9.1, (9.9)): each pass has
   /// half the pair's penalty, and the reverse pass (slave and master swapped) follows the pair in

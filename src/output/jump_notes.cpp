@@ -36,11 +36,13 @@ std::string volume_jump_note(const Model& m, int load, int step, const StepTrace
 std::string extreme_stretch_note(const Model& m, int part, const std::vector<MembranePoint>& points,
                                  const std::string& when) {
   double largest = 0, thickest = 0;
+  int along = 0;  // the direction of the largest stretch: 0, e1; 1, e2
   const MembranePoint* at = nullptr;
   const MembranePoint* crushed = nullptr;
   for (const MembranePoint& p : points) {
-    const double s = std::max(p.lambda(0), p.lambda(1));
-    if (std::isfinite(s) && s > largest) largest = s, at = &p;
+    const int k = p.lambda(1) > p.lambda(0) ? 1 : 0;
+    const double s = p.lambda(k);
+    if (std::isfinite(s) && s > largest) largest = s, at = &p, along = k;
     if (std::isfinite(p.lambda(2)) && p.lambda(2) > thickest) thickest = p.lambda(2), crushed = &p;
   }
   const std::string len = m.units.display_unit(Dimension::length);
@@ -52,13 +54,20 @@ std::string extreme_stretch_note(const Model& m, int part, const std::vector<Mem
                         : fmt::format("at ({:.4g}, {:.4g}, {:.4g}) {}", l(p.x(0)), l(p.x(1)), l(p.x(2)), len);
   };
   const std::string& name = m.parts[part].name;
+  // Axisymmetric points: λ1 = r/R around the circumference, λ2 along the meridian.
+  const auto direction = [&](const MembranePoint& p) {
+    if (axisymmetric) return std::string(along == 0 ? "around the circumference (hoop)" : "along the meridian");
+    const Eigen::Vector3d& e = along == 0 ? p.e1 : p.e2;
+    return fmt::format("along its material direction {} (reference ({:.3g}, {:.3g}, {:.3g}))", along + 1, e(0), e(1),
+                       e(2));
+  };
   if (at && largest > kExtremeStretch)
     return fmt::format(
-        "{}, part '{}' is stretched {:.3g}-fold {}, where arteries reach 2 to 3 and balloons rarely 6: a load or a "
+        "{}, part '{}' is stretched {:.3g}-fold {} {}, where arteries reach 2 to 3 and balloons rarely 6: a load or a "
         "boundary value (or its unit) is likely off, or an increment jumped across a maximum of the pressure onto a "
         "far branch of the curve (`volume_control` follows it, user guide §3.1). Check the step's values; results at "
         "such a stretch are those of the strain energy far outside where it was fitted",
-        when, name, largest, where(*at));
+        when, name, largest, direction(*at), where(*at));
   if (crushed && thickest > kExtremeStretch)
     return fmt::format(
         "{}, part '{}' is crushed {}: its thickness grew {:.3g}-fold, so its area shrank to 1/{:.3g} of the reference, "

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -13,7 +14,8 @@ namespace tunica {
 
 namespace {
 
-constexpr const char* kMagic = "tunica-restart 7";
+constexpr const char* kMagic = "tunica-restart 8";
+constexpr const char* kMagicWithoutSmoothing = "tunica-restart 7";
 constexpr const char* kMagicWithoutPrestress = "tunica-restart 6";
 constexpr const char* kMagicWithoutReference = "tunica-restart 5";
 constexpr const char* kMagicWithoutTrace = "tunica-restart 4";
@@ -154,6 +156,8 @@ std::string restart_text(const RestartRecord& r) {
       std::vector<double>(c.reference_shift.data(), c.reference_shift.data() + c.reference_shift.size()));
   // After a prestress step, its prestretch and stress-free thickness per Gauss point.
   put(s, "prestress", c.prestress);
+  // The contact smoothing the run switched on by itself, per pair (theory manual (9.2)).
+  put(s, "contact_smoothing", c.contact_smoothing);
   return s + fmt::format("checksum {:08x}\n", crc32_of(s));
 }
 
@@ -161,17 +165,19 @@ RestartRecord read_restart(const std::string& path) {
   const std::string text = read_file_bounded(path, kMaxRestartBytes, "restart file");
   Reader in(path, text);
   RestartRecord r;
-  bool has_trace = false, has_reference = false, has_prestress = false;
+  bool has_trace = false, has_reference = false, has_prestress = false, has_smoothing = false;
   {
     const std::string first = text.substr(0, text.find('\n'));
     r.has_fingerprint = first != kMagicWithoutFingerprint;
-    has_prestress = first == kMagic;
+    has_smoothing = first == kMagic;
+    has_prestress = has_smoothing || first == kMagicWithoutSmoothing;
     has_reference = has_prestress || first == kMagicWithoutPrestress;
     has_trace = has_reference || first == kMagicWithoutReference;
-    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutPrestress &&
+    if (first.rfind("tunica-restart ", 0) == 0 && first != kMagic && first != kMagicWithoutSmoothing &&
+        first != kMagicWithoutPrestress &&
         first != kMagicWithoutReference && first != kMagicWithoutTrace && r.has_fingerprint)
       in.fail("written by another version of Tunica ('" + first.substr(0, 40) + "'; this one reads '" + kMagic +
-              "', '" + kMagicWithoutPrestress + "', '" + kMagicWithoutReference + "', '" + kMagicWithoutTrace +
+              "', '" + kMagicWithoutSmoothing + "', '" + kMagicWithoutPrestress + "', '" + kMagicWithoutReference + "', '" + kMagicWithoutTrace +
               "' and '" + kMagicWithoutFingerprint + "')");
     if (first.rfind("tunica-restart ", 0) != 0) in.fail("not a Tunica restart file (first line '" + first.substr(0, 40) + "')");
   }
@@ -240,6 +246,11 @@ RestartRecord read_restart(const std::string& path) {
   if (has_prestress) {
     c.prestress = in.vector("prestress");
     if (c.prestress.size() % 5 != 0) in.fail("'prestress' takes 5 values per Gauss point");
+  }
+  if (has_smoothing) {
+    c.contact_smoothing = in.vector("contact_smoothing");
+    for (double d : c.contact_smoothing)
+      if (!(d >= 0) || !std::isfinite(d)) in.fail("'contact_smoothing' takes widths ≥ 0");
   }
   if (!(c.fraction >= 0 && c.fraction <= 1) || !(c.dt >= 0 && c.dt <= 1)) in.fail("step fraction out of [0, 1]");
   // Last: the CRC-32 of every byte before this line. A restart file edited by hand or damaged

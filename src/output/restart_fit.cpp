@@ -148,6 +148,20 @@ std::string check_restart_fits(const Model& m, const RestartRecord& r, const std
                                  "but this deck's step {} is not after an inverse step: it is another deck's run. Run "
                                  "this deck in a fresh output folder (`tunica run {} -o <new folder>`).",
                                  folder, c.step + 1, m.deck_file));
+  // The contact smoothing the run switched on, per pair (theory manual (9.2)): one width per pair of
+  // the deck, and only where the deck leaves the pair's `smoothing` to the analysis.
+  if (!c.contact_smoothing.empty()) {
+    bool fits = c.contact_smoothing.size() == m.contacts.size();
+    for (std::size_t k = 0; fits && k < m.contacts.size(); ++k)
+      fits = c.contact_smoothing[k] == 0 || m.contacts[k].auto_smoothing;
+    if (!fits)
+      throw InputError({file, 0, 0, ""},
+                       fmt::format("the run in {} switched on the smoothing of {} contact pair(s), but this deck has {} "
+                                   "pair(s) (with the reverse passes of `passes: 2`) or gives one of them its own "
+                                   "`smoothing`: it is another deck's run. Run this deck in a fresh output folder "
+                                   "(`tunica run {} -o <new folder>`).",
+                                   folder, c.contact_smoothing.size(), m.contacts.size(), m.deck_file));
+  }
 
   // Every step done: a restart has nothing to run, unless the deck adds a step.
   if (c.step >= static_cast<int>(m.steps.size()) || (c.step == static_cast<int>(m.steps.size()) - 1 && c.fraction >= 1.0)) {

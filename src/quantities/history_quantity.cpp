@@ -210,7 +210,7 @@ std::vector<Q> make_table() {
   t.push_back(contact("contact_penetration", Dimension::length, Reduce::max,
                       "penetration ⟨−g_N⟩ of the slave nodes into the master (0 off contact; g_N = distance − offset; "
                       "`passes: 2`: of the first pass; default reduce: max)",
-                      [](const ContactNodeState& c) { return std::max(-c.point.gap, 0.0); }));
+                      [](const ContactNodeState& c) { return std::max(0.0, -c.point.gap); }));  // +0, never −0
   return t;
 }
 

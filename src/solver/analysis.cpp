@@ -1,6 +1,7 @@
 #include "solver/analysis.hpp"
 
 #include "assembly/pressure_load_checks.hpp"
+#include "solver/contact_chatter.hpp"
 #include "solver/failure_hints.hpp"
 #include "solver/shell_fold_hint.hpp"
 #include "solver/forward_solve_counter.hpp"
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace tunica {
 
@@ -67,6 +69,14 @@ void Analysis::adopt_reference(const Eigen::VectorXd& shift, int forward_of, int
 
 void Analysis::install_model(std::unique_ptr<Model> m) {
   system_.reset();
+  // The smoothing the analysis switched on (Checkpoint::contact_smoothing) holds on every model it
+  // installs: the deck's gets a copy that carries it.
+  const std::vector<double>& smooth = state_.contact_smoothing;
+  const bool smoothed = std::any_of(smooth.begin(), smooth.end(), [](double d) { return d > 0; });
+  if (!m && smoothed) m = std::make_unique<Model>(deck_model_);
+  if (m)
+    for (std::size_t c = 0; c < smooth.size() && c < m->contacts.size(); ++c)
+      if (smooth[c] > 0) m->contacts[c].law.smoothing = smooth[c];
   own_model_ = std::move(m);
   model_ = own_model_ ? own_model_.get() : &deck_model_;
   system_ = std::make_unique<System>(*model_);
@@ -314,6 +324,10 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     // Past an inverse step: the reference it computed, or the prestress (the restart file records them).
     if (state_.reference_shift.size() > 0) adopt_reference(state_.reference_shift);
     if (!state_.prestress.empty()) adopt_prestress(state_.prestress);
+    // The contact smoothing the run switched on before the restart file was written.
+    if (state_.reference_shift.size() == 0 && state_.prestress.empty() &&
+        std::any_of(state_.contact_smoothing.begin(), state_.contact_smoothing.end(), [](double d) { return d > 0; }))
+      install_model(nullptr);
     // Which parts are active follows from the step (restart files do not store it).
     state_.loads.step = state_.step_start.step = state_.step;
     update_reactions();
@@ -349,7 +363,36 @@ std::string Analysis::contact_hints(const NewtonResult& last, int step) const {
   return coarse.empty() ? contact_convergence_hint(*system_, state_.u, model_->steps[step], step, last) : coarse;
 }
 
+std::string Analysis::smoothing_retry_text(const std::vector<int>& pairs) const {
+  const Model& m = *model_;
+  const std::string lu = m.units.display_unit(Dimension::length);
+  std::string named;
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    named += fmt::format("{}`smoothing: {:.2g} {}` on pair '{}'", k == 0 ? "" : k + 1 == pairs.size() ? " and " : ", ",
+                         m.units.from_internal(auto_smoothing_width(m, pairs[k]), lu, Dimension::length), lu,
+                         m.contacts[pairs[k]].name);
+  return fmt::format(
+      "the contact active set chattered: retrying the increment from its first size with {} (10⁻³ of the slave's "
+      "element length, theory manual (9.2)) for the rest of the run; `smoothing: 0` on the pair keeps the plain law",
+      named);
+}
+
+void Analysis::smooth_contacts(const std::vector<int>& pairs) {
+  const Model& m = *model_;
+  state_.contact_smoothing.resize(m.contacts.size(), 0.0);
+  for (int c : pairs) {
+    state_.contact_smoothing[c] = auto_smoothing_width(m, c);
+    if (const int r = m.contacts[c].reverse; r >= 0) state_.contact_smoothing[r] = auto_smoothing_width(m, r);
+  }
+  install_model(own_model_ ? std::make_unique<Model>(*own_model_) : nullptr);
+}
+
 void Analysis::run_step(AnalysisObserver& observer) {
+  std::vector<int> smooth;
+  while (!run_increments(observer, smooth)) smooth_contacts(smooth);
+}
+
+bool Analysis::run_increments(AnalysisObserver& observer, std::vector<int>& smooth) {
   const int s = state_.step;
   const Step& step = model_->steps[s];
   // Each amplitude ramps from its value at the start of the step to the step's target.
@@ -406,7 +449,9 @@ void Analysis::run_step(AnalysisObserver& observer) {
     info.step_name = step.name;
     info.increment = state_.increment + 1;
     int cutbacks = 0;
-    for (int attempt = 0;; ++attempt) {
+    const double first_dt = dt;
+    // A retry after the automatic smoothing (run_step) numbers its attempts on from the failed ones.
+    for (int attempt = std::exchange(carried_attempts_, 0);; ++attempt) {
       info.attempt = attempt;
       info.fraction = t + dt;
       info.time = static_cast<double>(s) + info.fraction;
@@ -453,6 +498,19 @@ void Analysis::run_step(AnalysisObserver& observer) {
       // halvings carried over from earlier increments: time always advances.
       const double min_dt = nominal * std::ldexp(1.0, -step.solver.max_cutbacks);
       if (cutbacks >= step.solver.max_cutbacks || 0.5 * dt < min_dt * (1 - 1e-12)) {
+        // A contact front that chattered down to the smallest increment: the penalty law of the
+        // pairs involved is smoothed (theory manual (9.2)) and the increment tried again from its
+        // first size, once per pair and run.
+        if (everted_load < 0) {
+          smooth = pairs_to_smooth(*system_, state_.u, s, r);
+          if (!smooth.empty()) {
+            observer.on_retry(info, why, smoothing_retry_text(smooth));
+            state_.dt = first_dt;
+            state_.reduced_successes = 0;
+            carried_attempts_ = attempt + 1;
+            return false;
+          }
+        }
         // With `max_cutbacks: 0` nothing was cut back: the increment is the step's nominal one.
         const std::string size =
             step.solver.max_cutbacks == 0
@@ -495,6 +553,7 @@ void Analysis::run_step(AnalysisObserver& observer) {
       throw Interrupted(fmt::format("stopped on request after step {} '{}', increment {} (step fraction {:.9g})",
                                     info.step, step.name, info.increment, t));
   }
+  return true;
 }
 
 }  // namespace tunica

@@ -54,6 +54,10 @@ struct Checkpoint {
   /// (P₁₁, P₂₁, P₁₂, P₂₂) and stress-free thickness H̃, which the model's parts have taken on
   /// (Analysis::model()); empty before.
   std::vector<double> prestress;
+  /// Per Model::contacts entry, the smoothing width δ the analysis switched on for it after an
+  /// increment failed with a chattering active set (theory manual (9.2)), which the model's pairs
+  /// have taken on (Analysis::model()); 0: the deck's law. Empty: none switched on.
+  std::vector<double> contact_smoothing;
 };
 
 class Analysis;
@@ -126,7 +130,8 @@ private:
   void update_reactions();
   /// Enclosed volumes of every load's surface at the current state (LoadState::volume).
   void update_volumes();
-  /// Solves step `state_.step` from `state_.fraction` to its end.
+  /// Solves step `state_.step` from `state_.fraction` to its end (run_increments, switching on the
+  /// automatic contact smoothing where it asks for it).
   void run_step(AnalysisObserver& observer);
   /// Empty, or why the converged state u is inadmissible: the enclosed volume of a load whose
   /// volume's sign is its surface's orientation (assembly/pressure_load_checks.hpp,
@@ -163,7 +168,19 @@ private:
   void end_iterative_step(AnalysisObserver& observer, const LoadState& end, int iterations);
   /// The diagonal of the bounding box of the deck's (imaged) positions: the model's size.
   double imaged_diagonal() const;
-  /// Makes `m` the model (model() and a system() built on it) with the volumes that go with it.
+  /// Solves step `state_.step` from `state_.fraction` on. Returns false, with the pairs in `smooth`,
+  /// when an increment failed at its smallest size with a chattering active set on pairs that
+  /// take the automatic smoothing (solver/contact_chatter.hpp): the state is the last converged
+  /// one, with the failed increment's first size as the next (Checkpoint::dt).
+  bool run_increments(AnalysisObserver& observer, std::vector<int>& smooth);
+  /// What the progress log says of switching on the automatic smoothing of `pairs`.
+  std::string smoothing_retry_text(const std::vector<int>& pairs) const;
+  /// Switches on the automatic smoothing (theory manual (9.2)) of contact pairs `pairs` (and their
+  /// reverse passes): records it in Checkpoint::contact_smoothing and rebuilds model() and system()
+  /// with it.
+  void smooth_contacts(const std::vector<int>& pairs);
+  /// Makes `m` the model (model() and a system() built on it) with the volumes that go with it; the
+  /// smoothing of Checkpoint::contact_smoothing on it (on a copy of the deck's model for nullptr).
   void install_model(std::unique_ptr<Model> m);
   /// The end of inverse step `s`: the reference becomes the computed X (adopt_reference), the
   /// state u = x̂ − X and the prescribed values the same displacements on the new reference,
@@ -179,6 +196,9 @@ private:
   std::vector<char> orientation_volume_;  ///< per load: volume_sign_is_orientation
   std::vector<double> reference_volume_;  ///< per load: its enclosed volume at the stress-free reference
   SolverFactory solver_factory_ = make_linear_solver;
+  /// The attempts of an increment that run_increments gave up for the automatic smoothing: its
+  /// retry's attempts count on from them (newton.csv's attempt column stays unique).
+  int carried_attempts_ = 0;
 };
 
 }  // namespace tunica

@@ -1,4 +1,5 @@
 #include "solver/failure_hints.hpp"
+#include "solver/contact_chatter.hpp"
 
 #include "model/boundary_motion_check.hpp"
 
@@ -554,39 +555,12 @@ double largest_tension(const System& system, const Eigen::VectorXd& u, int part,
   return t;
 }
 
-/// The mean length of a chain's segments at the reference state (0 for fewer than 2 nodes).
-double mean_segment(const Model& m, const std::vector<int>& chain) {
-  if (chain.size() < 2) return 0;
-  double length = 0;
-  for (std::size_t i = 0; i + 1 < chain.size(); ++i) length += (m.X[chain[i + 1]] - m.X[chain[i]]).norm();
-  return length / static_cast<double>(chain.size() - 1);
-}
-
-/// The membrane part that holds the first node of a chain, or −1.
-int part_of_chain(const Model& m, const std::vector<int>& chain) {
-  if (chain.empty()) return -1;
-  for (std::size_t p = 0; p < m.parts.size(); ++p) {
-    const Part& part = m.parts[p];
-    if (part.is_solid()) continue;
-    if (std::find(part.nodes.begin(), part.nodes.end(), chain.front()) != part.nodes.end()) return static_cast<int>(p);
-  }
-  return -1;
-}
-
 }  // namespace
 
 std::string contact_convergence_hint(const System& system, const Eigen::VectorXd& u, const Step& step, int step_index,
                                      const NewtonResult& last) {
   const Model& m = system.model();
-  // The pairs in play in this step, as the deck names them (a reverse pass belongs to its pair).
-  std::vector<int> pairs;
-  for (std::size_t c = 0; c < m.contacts.size(); ++c) {
-    const ContactPair& pair = m.contacts[c];
-    if (pair.is_reverse_pass()) continue;
-    if (pair.part >= 0 && !m.part_active(pair.part, step_index)) continue;
-    if (const int master = part_of_chain(m, pair.master); master >= 0 && !m.part_active(master, step_index)) continue;
-    pairs.push_back(static_cast<int>(c));
-  }
+  const std::vector<int> pairs = contact_pairs_in_play(m, step_index);
   if (pairs.empty()) return "";
   std::string names;
   for (std::size_t k = 0; k < pairs.size(); ++k)
@@ -595,12 +569,7 @@ std::string contact_convergence_hint(const System& system, const Eigen::VectorXd
   // length of its surface. A failed attempt that found nodes in contact from far away diverged
   // first; its contact is a symptom.
   bool near = false;
-  for (int c : pairs) {
-    const ContactPair& pair = m.contacts[c];
-    const double length = mean_segment(m, pair.area_chain);
-    for (const ContactNodeState& s : system.contact_states(u, c, step_index))
-      near = near || (s.point.normal.squaredNorm() > 0 && s.point.gap < length);
-  }
+  for (int c : pairs) near = near || contact_near(system, u, c, step_index);
   if (!near) return "";
   const bool contact_in_play = last.active_contacts > 0 || last.active_set_changes > 0;
   std::string slack;
@@ -641,11 +610,22 @@ std::string contact_convergence_hint(const System& system, const Eigen::VectorXd
   // Chattering, or contact on a master without tension (whose nodes a full correction moves in
   // and out of contact even when the line search keeps the active set).
   if (last.active_set_changes < kContactChatterIterations && (slack.empty() || last.active_contacts == 0)) return "";
-  bool deformable = false, one_pass = false;
-  for (int c : pairs) {
-    deformable = deformable || m.contacts[c].deformable();
-    one_pass = one_pass || (m.contacts[c].deformable() && m.contacts[c].reverse < 0);
-  }
+  bool deformable = false;
+  for (int c : pairs) deformable = deformable || m.contacts[c].deformable();
+  // A slave inflated under pressure control: a compliant balloon past its own pressure maximum
+  // spreads along the surface it presses on at about the same pressure, a path on which the
+  // pressure does not rise and which pressure control cannot follow (theory manual (7.9)).
+  std::string inflated;
+  if (step.volume_control.load < 0)
+    for (int c : pairs)
+      for (const PressureLoad& l : m.loads)
+        if (inflated.empty() && l.part >= 0 && l.part == m.contacts[c].part && step.targets.count(l.name))
+          inflated = fmt::format(
+              " The slave '{}' is inflated by '{}' under pressure control: a compliant balloon past its own pressure "
+              "maximum (where it is free it would bulge without bound) spreads along the surface it presses on at "
+              "about the same pressure, which pressure control cannot follow; `volume_control: {{load: {}, volume: "
+              "<the volume to reach>}}` on this step follows it (user guide §3.1, volume control).",
+              m.parts[l.part].name, l.name, l.name);
   // A pair without smoothing: the C¹ blend (9.2) of about 10⁻³ of its slave's element length.
   std::string smoothing;
   for (int c : pairs) {
@@ -663,13 +643,10 @@ std::string contact_convergence_hint(const System& system, const Eigen::VectorXd
   return fmt::format(
       " Hint: the failed attempt had slave nodes in contact ({} at its last iterate, pair(s) {}), and the contact "
       "active set changed at {} of its {} iterations: Newton did not settle which slave nodes touch, and cutting "
-      "the increment back did not help.{} {}{}A smaller `penalty` makes the contact softer, at the price of a deeper "
-      "penetration (p_c/ε, user guide §3.2, choosing ε).",
-      last.active_contacts, names, last.active_set_changes, last.iterations, slack, smoothing,
-      one_pass     ? "For a deformable pair, `passes: 2` holds the master's nodes off the slave too, and a finer slave "
-                     "mesh spreads the contact over more nodes (theory manual §9.1). "
-      : deformable ? "A finer slave mesh spreads the contact over more nodes (theory manual §9.1). "
-                   : "");
+      "the increment back did not help.{}{} {}{}A smaller `penalty` makes the contact softer, at the price of a "
+      "deeper penetration (p_c/ε, user guide §3.2, choosing ε).",
+      last.active_contacts, names, last.active_set_changes, last.iterations, inflated, slack, smoothing,
+      deformable ? "A finer slave mesh spreads the contact over more nodes (theory manual §9.1). " : "");
 }
 
 }  // namespace tunica

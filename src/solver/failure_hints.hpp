@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "assembly/system.hpp"
+#include "solver/contact_chatter.hpp"
 #include "solver/newton.hpp"
 #include "solver/step_trace.hpp"
 
@@ -81,10 +82,6 @@ constexpr double kCoarseSlaveSpacing = 1.5;
 /// the master's nodes between them are held by nothing but the master's own stiffness (theory
 /// manual §9.1, one pass). It names the remedies: a finer slave mesh, or the reverse pass.
 std::string contact_resolution_hints(const System& system, const Eigen::VectorXd& u, int step);
-
-/// The contact active set changed at this many iterations of the failed attempt (or more): Newton
-/// did not settle which slave nodes touch (chattering).
-constexpr int kContactChatterIterations = 3;
 
 /// A membrane master whose largest tension is below this fraction of its slave's carries almost no
 /// tension (a stress-free artery before its prestretch).

@@ -85,3 +85,18 @@ steps:
   EXPECT_EQ(ok.output.find("crushed"), std::string::npos) << ok.output;
   EXPECT_EQ(ok.output.find("stretched"), std::string::npos) << ok.output;
 }
+
+TEST(JumpNotes, AStretchNoteSaysAlongWhichDirection) {
+  const Model m = read_deck_text(kBalloon, "ball.yaml");
+  // Axisymmetric points: λ1 = r/R (hoop), λ2 along the meridian.
+  MembranePoint p;
+  p.lambda = Eigen::Vector3d(0.4, 9.0, 1 / 3.6);
+  p.x = Eigen::Vector3d(0.008, 1, 0);
+  p.X = Eigen::Vector3d(0.02, 1, 0);
+  const std::string meridian = extreme_stretch_note(m, 0, {p}, "at x");
+  EXPECT_NE(meridian.find("part 'ball' is stretched 9-fold along the meridian at r = 0.008 mm"), std::string::npos)
+      << meridian;
+  p.lambda = Eigen::Vector3d(9.0, 1.2, 1 / 10.8);
+  const std::string hoop = extreme_stretch_note(m, 0, {p}, "at x");
+  EXPECT_NE(hoop.find("stretched 9-fold around the circumference (hoop)"), std::string::npos) << hoop;
+}

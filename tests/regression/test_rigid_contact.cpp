@@ -251,3 +251,25 @@ TEST(RigidContactDeck, PenetrationFarBeyondThePenaltysScaleIsWarnedOnceAtThePair
   EXPECT_EQ(ok.exit_code, 0) << ok.output;
   EXPECT_EQ(ok.output.find("key 'contact.wall'"), std::string::npos) << ok.output;
 }
+
+TEST(RigidContactDeck, ASlaveFilledBeyondItsSleeveUnderVolumeControlIsToldToLowerTheTarget) {
+  // The sleeve holds π 1.2² × 1 = 4.52 mm³; filled to 4.9 mm³ the tube must sink about
+  // 0.38/(2π 1.2) ≈ 0.05 mm into it whatever the penalty: the volume sets the depth, which the
+  // warning names before the penalty.
+  std::string filled = replace(kTube, "PENALTY", "10 N/mm^3");
+  filled = replace(filled, "  - {name: contact, increments: 10, set: {lumen: 0.009}}",
+                   "  - {name: fill, increments: 10, volume_control: {load: lumen, volume: 4.9 mm^3}}");
+  const std::string deck = write_deck_file("tunica-rigid-contact", "overfilled", filled);
+  const std::string out = (std::filesystem::temp_directory_path() / "tunica-rigid-contact" / "overfilled-out").string();
+  const Outcome o = run_cli("run " + deck + " -q -o " + out);
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  for (const char* says : {"key 'contact.wall': contact pair 'wall': at step 2 'fill', increment",
+                           "mm into the rigid surface 'sleeve'",
+                           "step 'fill' prescribes the volume of load 'lumen' on the slave (`volume_control`, target "
+                           "4.9 mm³)",
+                           "If the target is more than fits inside the rigid surface 'sleeve', the volume and not "
+                           "the penalty sets how deep the slave sinks (a larger `penalty` raises the pressure, not "
+                           "the depth): lower the step's `volume` target, or control the pressure instead. Otherwise "
+                           "raise `penalty` (to about"})
+    EXPECT_NE(o.output.find(says), std::string::npos) << says << " missing from: " << o.output;
+}

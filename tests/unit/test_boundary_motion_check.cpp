@@ -39,6 +39,7 @@ std::vector<std::string> motion_warnings(const Model& m) {
   std::vector<std::string> out;
   for (const std::string& w : m.warnings)
     if (w.find("past the whole model") != std::string::npos || w.find("across the axis") != std::string::npos ||
+        w.find("stretched at least") != std::string::npos ||
         w.find("every DOF the boundary names") != std::string::npos)
       out.push_back(w);
   return out;
@@ -63,9 +64,9 @@ TEST(BoundaryMotionCheck, AStretchAShorteningAndAFreeTranslationAreNot) {
   // A stretch away from the base, a shortening short of it, the base pulled away from the end, and
   // a tube whose other end nothing holds in z (it translates).
   for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"pull: -12 mm", "pull: 12 mm"},
+           {"pull: -12 mm", "pull: 5 mm"},
            {"pull: -12 mm", "pull: -8 mm"},
-           {"set: {pull: -12 mm}", "set: {base: -12 mm}"},
+           {"set: {pull: -12 mm}", "set: {base: -5 mm}"},
            {"  base: {node_set: wall.start, dofs: [z]}\n", "  base: {node_set: wall.start, dofs: [r]}\n"}}) {
     const Model m = read_deck_text(replace(kTube, from, to), "tube.yaml");
     EXPECT_TRUE(motion_warnings(m).empty()) << to << ": " << (motion_warnings(m).empty() ? "" : motion_warnings(m)[0]);
@@ -75,6 +76,23 @@ TEST(BoundaryMotionCheck, AStretchAShorteningAndAFreeTranslationAreNot) {
   ASSERT_EQ(motion_warnings(up).size(), 1u);
   EXPECT_NE(motion_warnings(up)[0].find("to z = 10.5 mm: past the whole model"), std::string::npos)
       << motion_warnings(up)[0];
+}
+
+TEST(BoundaryMotionCheck, AnEndPulledByMoreThanTheModelIsWarnedAboutAsAPosition) {
+  // `pull: 13 mm` on a 10 mm tube: the end at z = 13 mm was meant, a 3 mm prestretch.
+  const Model m = read_deck_text(replace(kTube, "pull: -12 mm", "pull: 13 mm"), "tube.yaml");
+  const std::vector<std::string> w = motion_warnings(m);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("key 'steps[0].set.pull'"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("boundary 'pull' moves z of node set 'wall.end' by 13 mm in step 'prestretch', away from "
+                      "boundary 'base', which holds z on the other side: more than the model's whole extent in z (10 "
+                      "mm), so the wall between is stretched at least 2.3-fold along z"),
+            std::string::npos)
+      << w[0];
+  EXPECT_NE(w[0].find("if the set (at z = 10 mm) is to end at z = 13 mm, the value is 3 mm"), std::string::npos)
+      << w[0];
+  // Half the tube's length (λz 1.5) is not.
+  EXPECT_TRUE(motion_warnings(read_deck_text(replace(kTube, "pull: -12 mm", "pull: 5 mm"), "tube.yaml")).empty());
 }
 
 TEST(BoundaryMotionCheck, ARadialMotionAcrossTheAxisIsWarnedAbout) {

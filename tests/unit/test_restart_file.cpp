@@ -79,7 +79,7 @@ TEST(RestartFile, AFileOfFormat4IsReadWithoutATrace) {
   // What Tunica wrote before it kept the trace: the run continues, its hints start afresh.
   std::string text = restart_text(record(7));
   text = text.substr(0, text.rfind("checksum "));
-  text = test::replace(text, "tunica-restart 7\n", "tunica-restart 4\n");
+  text = test::replace(text, "tunica-restart 8\n", "tunica-restart 4\n");
   const std::size_t from = text.find("trace "), to = text.find("\nu ") + 1;
   text.erase(from, to - from);
   text.erase(text.find("reference_shift "));
@@ -92,7 +92,7 @@ TEST(RestartFile, AFileOfFormat5IsReadWithoutAReferenceShift) {
   // What Tunica wrote before steps could follow an inverse step: no reference of its own.
   std::string text = restart_text(record(7));
   text = text.substr(0, text.rfind("checksum "));
-  text = test::replace(text, "tunica-restart 7\n", "tunica-restart 5\n");
+  text = test::replace(text, "tunica-restart 8\n", "tunica-restart 5\n");
   text.erase(text.find("reference_shift "));
   const RestartRecord r = read_restart(write("format5.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
   EXPECT_EQ(r.checkpoint.reference_shift.size(), 0);
@@ -103,11 +103,29 @@ TEST(RestartFile, AFileOfFormat6IsReadWithoutAPrestress) {
   // What Tunica wrote before the prestress method of inverse steps.
   std::string text = restart_text(record(7));
   text = text.substr(0, text.rfind("checksum "));
-  text = test::replace(text, "tunica-restart 7\n", "tunica-restart 6\n");
+  text = test::replace(text, "tunica-restart 8\n", "tunica-restart 6\n");
   text.erase(text.find("prestress "));
   const RestartRecord r = read_restart(write("format6.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
   EXPECT_TRUE(r.checkpoint.prestress.empty());
   EXPECT_EQ(r.checkpoint.trace.count(), 7);
+}
+
+TEST(RestartFile, AFileOfFormat7IsReadWithoutAContactSmoothing) {
+  // What Tunica wrote before it smoothed a chattering contact by itself.
+  std::string text = restart_text(record(7));
+  text = text.substr(0, text.rfind("checksum "));
+  text = test::replace(text, "tunica-restart 8\n", "tunica-restart 7\n");
+  text.erase(text.find("contact_smoothing "));
+  const RestartRecord r = read_restart(write("format7.txt", text + fmt::format("checksum {:08x}\n", crc32_of(text))));
+  EXPECT_TRUE(r.checkpoint.contact_smoothing.empty());
+  EXPECT_EQ(r.checkpoint.trace.count(), 7);
+}
+
+TEST(RestartFile, TheContactSmoothingIsReadBack) {
+  RestartRecord rec = record(7);
+  rec.checkpoint.contact_smoothing = {0.0, 1.8e-4, 2.5e-4};
+  const RestartRecord r = read_restart(write("smoothing.txt", restart_text(rec)));
+  EXPECT_EQ(r.checkpoint.contact_smoothing, rec.checkpoint.contact_smoothing);
 }
 
 TEST(RestartFile, APrestressIsReadBack) {
