@@ -106,6 +106,7 @@ int run(const std::string& deck, std::string out, const std::string& restart, bo
                          "  tunica run %s --restart %s\n", sig, e.what(), deck.c_str(), out.c_str());
     return 128 + sig;
   }
+  writer.note_untouched_contacts();
   if (!quiet)
     std::printf("done in %.3f s; results in %s\n",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), out.c_str());
@@ -120,7 +121,7 @@ int check(const std::string& deck, const tunica::ReadOptions& options) {
   for (const auto& p : model.parts) elements += p.num_elements();
   std::printf("%s: valid deck: %zu material(s), %zu part(s), %d node(s), %d element(s), %zu boundary set(s), "
               "%zu load(s), %zu step(s), %zu history column(s)\n",
-              deck.c_str(), model.materials.size(), model.parts.size(), model.num_nodes(), elements,
+              deck.c_str(), model.materials.size() + model.solid_materials.size(), model.parts.size(), model.num_nodes(), elements,
               model.boundaries.size(), model.loads.size(), model.steps.size(), model.output.history.size());
   std::fflush(stdout);
   print_warnings(system);

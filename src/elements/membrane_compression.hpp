@@ -25,6 +25,11 @@ constexpr double kUnstrained = 1e-6;
 /// sizable share of the tension or all of the stress.
 constexpr double kCompressionShare = 1e-2;
 
+/// A membrane part whose largest |principal stress| is below this share of the most loaded
+/// membrane part's carries no load yet: the run does not note its compression
+/// (output/run_writer.cpp), whose signs are then round-off.
+constexpr double kUnloadedShare = 1e-3;
+
 /// Per point: 1 if σ_min < −kCompressionShare s, s the largest |principal stress| over `points`,
 /// else 0; all 0 if no point is strained beyond kUnstrained.
 std::vector<char> compressed_points(const std::vector<MembranePoint>& points);

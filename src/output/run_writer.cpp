@@ -46,7 +46,7 @@ const FileRecord* find_record(const RestartRecord& r, const std::string& name) {
 }  // namespace
 
 RunWriter::RunWriter(const Model& model, std::string directory, std::FILE* progress, const RestartRecord* resume)
-    : model_(model), dir_(std::move(directory)), progress_(progress) {
+    : model_(model), dir_(std::move(directory)), progress_(progress), resumed_(resume != nullptr) {
   std::error_code ec;
   const bool had_vtk = std::filesystem::exists(dir_ + "/vtk", ec);
   std::filesystem::create_directories(model.output.vtk ? dir_ + "/vtk" : dir_, ec);  // vtk/ only for frames
@@ -244,15 +244,25 @@ void RunWriter::note_membrane_states(const Analysis& analysis, const IncrementIn
   compression_noted_.resize(model_.parts.size(), 0);
   stretch_noted_.resize(model_.parts.size(), 0);
   const std::string when = fmt::format("at step {} '{}', increment {}", info.step, info.step_name, info.increment);
+  // One evaluation of each part's points serves both notes.
+  std::vector<std::vector<MembranePoint>> points(model_.parts.size());
+  double loaded = 0;  // the largest |principal stress| of any membrane part
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {
     const Part& part = model_.parts[p];
-    if ((compression_noted_[p] && stretch_noted_[p]) || part.is_solid() || part.is_shell()) continue;
-    // One evaluation of the part's points serves both notes.
-    const std::vector<MembranePoint> points =
-        analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step);
-    if (!compression_noted_[p]) note_compression(p, points, info);
+    if (part.is_solid() || part.is_shell()) continue;
+    points[p] = analysis.system().points(analysis.displacement(), static_cast<int>(p), analysis.loads().step);
+    const CompressionSize size = compression_size(points[p]);
+    loaded = std::max({loaded, size.tension, -size.compression});
+  }
+  for (std::size_t p = 0; p < model_.parts.size(); ++p) {
+    if (points[p].empty() || (compression_noted_[p] && stretch_noted_[p])) continue;
+    // A part whose stresses are all below kUnloadedShare of the most loaded part's is not loaded
+    // yet: its signs are round-off and the way the load reaches it, not compression to note.
+    const CompressionSize size = compression_size(points[p]);
+    const bool unloaded = std::max(size.tension, -size.compression) < kUnloadedShare * loaded;
+    if (!compression_noted_[p] && !unloaded) note_compression(p, points[p], info);
     if (!stretch_noted_[p]) {
-      const std::string note = extreme_stretch_note(analysis.model(), static_cast<int>(p), points, when);
+      const std::string note = extreme_stretch_note(analysis.model(), static_cast<int>(p), points[p], when);
       if (note.empty()) continue;
       stretch_noted_[p] = 1;
       std::fprintf(stderr, "tunica: note: %s.\n", terminal_safe(note).c_str());
@@ -305,6 +315,12 @@ void RunWriter::note_jumps(const Analysis& analysis, const IncrementInfo& info) 
 void RunWriter::note_penetration(const Analysis& analysis, const IncrementInfo& info) {
   if (info.step == 0) return;  // the reference state: the deck reader checks the sides
   penetration_noted_.resize(model_.contacts.size(), 0);
+  touched_.resize(model_.contacts.size(), 0);
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c)
+    if (!touched_[c])
+      for (const ContactNodeState& s :
+           analysis.system().contact_states(analysis.displacement(), static_cast<int>(c), info.step - 1))
+        touched_[c] = touched_[c] || s.point.active;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     if (penetration_noted_[c]) continue;
     const std::string w =
@@ -341,6 +357,32 @@ void RunWriter::finish(const Analysis& analysis) {
     committed_ = false;
   }
   commit_checkpoint();
+}
+
+void RunWriter::note_untouched_contacts() const {
+  if (resumed_ || touched_.size() != model_.contacts.size()) return;
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    const ContactPair& pair = model_.contacts[c];
+    // A two-pass pair touched when either pass did.
+    if (pair.is_reverse_pass() || touched_[c] || (pair.reverse >= 0 && touched_[pair.reverse])) continue;
+    const std::string surface = pair.deformable() ? fmt::format("its master '{}'", pair.master_name)
+                                                  : fmt::format("the rigid surface '{}'", model_.rigid_surfaces[pair.rigid].name);
+    const std::string slave = pair.part >= 0 ? fmt::format("part '{}'", model_.parts[pair.part].name) : "its slave";
+    // No load on the slave, one on the master's part: a load on the wrong part.
+    std::string loads_on_slave, loads_elsewhere;
+    for (const PressureLoad& l : model_.loads)
+      (l.part == pair.part ? loads_on_slave : loads_elsewhere) +=
+          fmt::format("'{}' on part '{}'; ", l.name, l.part >= 0 ? model_.parts[l.part].name : "?");
+    std::string why;
+    if (loads_on_slave.empty() && !loads_elsewhere.empty())
+      why = fmt::format(" No load acts on {} (the loads: {}): if it was to be pressed onto {}, check the loads' `part`.",
+                        slave, loads_elsewhere.substr(0, loads_elsewhere.size() - 2), surface);
+    std::fprintf(stderr,
+                 "tunica: note: contact pair '%s' never touched: no node of %s came within its offset of %s at any "
+                 "converged increment, so the pair had no effect on the results.%s\n",
+                 terminal_safe(pair.name).c_str(), terminal_safe(slave).c_str(), terminal_safe(surface).c_str(),
+                 terminal_safe(why).c_str());
+  }
 }
 
 RunWriter::~RunWriter() {

@@ -52,6 +52,11 @@ public:
   /// writes that state's ParaView frame if output.vtk_every skipped it, and commits its
   /// checkpoint if it is still waiting (the attempts written after it are not part of it).
   void finish(const Analysis& analysis);
+  /// After a run that reached its end from the reference state: a note on standard error per
+  /// contact pair whose slave never touched its surface (no active node at any converged
+  /// increment), naming the loads when none acts on the slave but one on its master (a load on
+  /// the wrong part).
+  void note_untouched_contacts() const;
 
 private:
   void resume_from(const RestartRecord& r);
@@ -88,6 +93,8 @@ private:
   bool last_framed_ = false;           ///< it has its ParaView frame
   std::vector<char> compression_noted_;  ///< per part
   std::vector<char> penetration_noted_;  ///< per contact pair
+  std::vector<char> touched_;            ///< per contact pair: an active slave node at some increment
+  bool resumed_ = false;                 ///< the run continues a restart: touched_ misses its start
   std::vector<char> jump_noted_;         ///< per load
   std::vector<char> stretch_noted_;      ///< per part
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();

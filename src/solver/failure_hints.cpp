@@ -174,6 +174,17 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
            "O(h²) change by O(1): it stalls, earlier the finer it is. Use a coarser or smoothed imaged mesh, or "
            "`method: fixed_point`, which finds the reference whose forward solution comes nearest the imaged mesh, or "
            "check the pressure against what the imaged shape carries (user guide §3.5).";
+  // The residual test held and the energy test stalled: the iterate is in equilibrium to the
+  // residual tolerance, and |Δu·R| sits at the round-off floor this model reaches (7.2).
+  if (last.energy_stall > 0) {
+    const double floor = std::pow(10.0, std::ceil(std::log10(last.energy_stall)) + 1);
+    return fmt::format(
+        " Hint: the residual criterion held and the energy criterion stalled at {:.3g}, the round-off floor of "
+        "|Δu·R| for this model (stiff penalty contact and parts of very different stiffness raise it; theory manual "
+        "(7.2)); more iterations do not lower it. `energy_tolerance: {:g}` in `solver` (now {:g}) accepts such an "
+        "iterate, whose equilibrium the residual criterion already checks.",
+        last.energy_stall, floor, step.solver.energy_tolerance);
+  }
   // A load the step raises that was written without a unit (the reader warned): a bare `150` is
   // 150 N/mm² in mm and N, a million mmHg, beyond what any membrane carries; this comes first.
   for (const auto& [load, written] : step.unitless_loads) {
@@ -241,7 +252,8 @@ std::string failure_hints(const Model& model, const Step& step, const NewtonResu
   // Still converging: the relative residual small, and the absolute one falling and small against
   // the forces that cancel in it. A relative residual is no evidence alone: measured against an
   // R₀ blown up by a wild first correction it is tiny while ‖R‖ is not.
-  const bool still_converging = last.failure.rfind("no convergence in", 0) == 0 && last.last_relative_residual < 1e-3 &&
+  const bool still_converging = last.energy_stall == 0 && last.failure.rfind("no convergence in", 0) == 0 &&
+                                last.last_relative_residual < 1e-3 &&
                                 last.residual_falling && last.last_residual <= 1e-3 * last.last_force_scale;
   const std::string more_iterations =
       fmt::format("Newton was still converging when it reached the iteration limit (relative residual {:.1e}): "

@@ -131,9 +131,18 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
       const auto [lo, hi] = std::minmax_element(residuals.end() - (m + 1), residuals.end());
       return *hi < *lo / 0.9;
     };
+    // The residual test of (7.2) holds and the energy test does not: the failure says which.
+    const auto energy_stalled = [&] {
+      if (!(k > 0 && rec.residual <= settings.residual_tolerance * r0 && side)) return std::string();
+      result.energy_stall = rec.relative_energy;
+      return fmt::format("; ‖R‖ met `residual_tolerance` ({:.3g} ≤ {:g}), the energy test did not (|Δu·R| at "
+                         "{:.3g} of |Δu₁·R₀|, above `energy_tolerance` {:g})",
+                         rec.relative_residual, settings.residual_tolerance, rec.relative_energy,
+                         settings.energy_tolerance);
+    };
     if (const int m = settings.stagnation_iterations; flat(m)) {
       on_iteration(rec);
-      result.failure = fmt::format("stagnating (‖R‖ within 10 % over the last {} iterations)", m);
+      result.failure = fmt::format("stagnating (‖R‖ within 10 % over the last {} iterations)", m) + energy_stalled();
       return result;
     }
     if (k >= settings.max_iterations) {
@@ -146,7 +155,7 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
       const bool contracting = n >= 4 && q(3) <= 0.5 && q(2) < 0.9 * q(3) && q(1) < 0.9 * q(2);
       if (!contracting || k >= settings.max_iterations_contracting) {
         on_iteration(rec);
-        result.failure = fmt::format("no convergence in {} iterations", k);
+        result.failure = fmt::format("no convergence in {} iterations", k) + energy_stalled();
         return result;
       }
     }

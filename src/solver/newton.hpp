@@ -56,6 +56,9 @@ struct NewtonResult {
   /// differs from this attempt.
   bool stiffened_start = false;
   bool singular = false;
+  /// > 0: at the last iterate the residual test of (7.2) held and the energy test did not; the
+  /// relative energy |Δx·r| / |Δx₁·R₀| it stalled at (`failure` says so).
+  double energy_stall = 0;
 };
 
 /// Iterates on the problem's state until the tests of `settings` hold, (7.2):

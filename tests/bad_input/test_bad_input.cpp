@@ -43,6 +43,13 @@ TEST(BadInput, TheExampleItselfIsValid) {
   EXPECT_NE(o.output.find("valid deck"), std::string::npos);
 }
 
+TEST(BadInput, TheCheckCountsSolidMaterialsToo) {
+  // Two membrane materials and the plaque's solid one.
+  const Outcome o = run_cli("check " + std::string(TUNICA_SOURCE_DIR) + "/examples/balloon-angioplasty.yaml");
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("valid deck: 3 material(s)"), std::string::npos) << o.output;
+}
+
 TEST(BadInput, YamlSyntaxError) {
   // yaml-cpp reports where it noticed the unclosed list: the next line; the message adds where it
   // was opened.

@@ -119,3 +119,36 @@ TEST(CompressionFlag, TheHoopStressErrorOfATubeInPlainAxialStretchIsNotCompressi
   EXPECT_GT(v[4], -1e-2 * v[3]) << h;
   std::filesystem::remove_all(dir);
 }
+
+TEST(CompressionFlag, APartTheLoadHasNotReachedIsNotNoted) {
+  // 'idle', a tube whose end is pushed by 10⁻⁴ mm, is in compression of 0.075 kPa; beside a
+  // tube inflated by 50 kPa (half its asymptote μH/R) it carries no load, alone it is the most loaded part.
+  const std::string deck = R"(units: {length: mm, force: N}
+materials:
+  rubber: {type: neo_hookean, mu: 1 MPa}
+parts:
+  loaded: {element: axisymmetric_membrane, material: rubber, thickness: 0.1 mm, mesh: {type: line, from: [1 mm, 0 mm], to: [1 mm, 2 mm], elements: 8}}
+  idle: {element: axisymmetric_membrane, material: rubber, thickness: 0.1 mm, mesh: {type: line, from: [3 mm, 0 mm], to: [3 mm, 2 mm], elements: 8}}
+boundary:
+  ends: {node_set: loaded.start, dofs: [z]}
+  tops: {node_set: loaded.end, dofs: [z]}
+  idle_base: {node_set: idle.start, dofs: [z]}
+  idle_push: {node_set: idle.end, dofs: [z]}
+loads:
+  lumen: {type: pressure, part: loaded}
+steps:
+  - {name: load, increments: 2, set: {idle_push: -1e-4 mm, lumen: PRESSURE}}
+output: {vtk: false}
+)";
+  const std::string dir = (std::filesystem::temp_directory_path() / "tunica-compression").string();
+  const Outcome with = run_cli("run " + write_deck_file("tunica-compression-decks", "idle",
+                                                        replace(deck, "PRESSURE", "50 kPa")) +
+                               " -q -o " + dir + "/idle");
+  ASSERT_EQ(with.exit_code, 0) << with.output;
+  EXPECT_EQ(with.output.find("part 'idle' is in compression"), std::string::npos) << with.output;
+  const Outcome alone = run_cli("run " + write_deck_file("tunica-compression-decks", "idle-alone",
+                                                         replace(deck, "PRESSURE", "0 kPa")) +
+                                " -q -o " + dir + "/idle-alone");
+  ASSERT_EQ(alone.exit_code, 0) << alone.output;
+  EXPECT_NE(alone.output.find("part 'idle' is in compression"), std::string::npos) << alone.output;
+}

@@ -17,6 +17,8 @@
 #include <tuple>
 
 #include "../support/capture.hpp"
+#include "../support/cli.hpp"
+#include "../support/deck_files.hpp"
 
 using namespace tunica;
 using namespace tunica::test;
@@ -304,4 +306,33 @@ TEST(ContactHints, ABalloonThatSpreadsUnderPressureControlIsToldToControlItsVolu
   EXPECT_GT(last[1], 0.0) << "the capsule presses on the artery";
   EXPECT_GT(last[0], 3.0);
   EXPECT_LT(last[0], 10.0);
+}
+
+TEST(ContactHints, APairThatNeverTouchedIsNotedWithTheLoadOnTheWrongPart) {
+  // The inflation written on the artery instead of the balloon: the artery inflates away from the
+  // balloon, the run ends normally, and the note says the pair never touched and why.
+  const std::string wrong = test::replace(
+      balloon_in_artery("  - {name: prestretch, increments: 2, set: {artery_end: 0.3 mm}}\n"
+                        "  - {name: inflation, increments: 4, set: {inflation: 20 kPa}}"),
+      "inflation: {type: pressure, part: balloon}", "inflation: {type: pressure, part: artery}");
+  const std::string dir = testing::TempDir() + "tunica-contact-hints";
+  const Outcome o = run_cli("run " + write_deck_file("tunica-contact-hints", "wrong-part.yaml", wrong) + " -q -o " +
+                            dir + "-wrong");
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("note: contact pair 'balloon_artery' never touched: no node of part 'balloon' came within "
+                          "its offset of its master 'artery'"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("No load acts on part 'balloon' (the loads: 'inflation' on part 'artery'): if it was to be "
+                          "pressed onto its master 'artery', check the loads' `part`."),
+            std::string::npos)
+      << o.output;
+  // The load on the balloon: it touches, no note.
+  const std::string right = test::replace(wrong, "inflation: {type: pressure, part: artery}",
+                                          "inflation: {type: pressure, part: balloon}");
+  const Outcome ok = run_cli("run " + write_deck_file("tunica-contact-hints", "right-part.yaml",
+                                                      test::replace(right, "inflation: 20 kPa", "inflation: 200 kPa")) +
+                             " -q -o " + dir + "-right");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_EQ(ok.output.find("never touched"), std::string::npos) << ok.output;
 }

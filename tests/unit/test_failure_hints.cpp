@@ -69,6 +69,17 @@ TEST(FailureHints, StillConvergingAtTheLimitSuggestsMoreIterations) {
   EXPECT_EQ(failure_hints(m, raising(10), failed("diverging", 1e-6), linear, trying(2.5)), "");
 }
 
+TEST(FailureHints, AStalledEnergyTestNamesTheEnergyToleranceNotMoreIterations) {
+  const Model m = one_load_model();
+  const auto linear = along({{0, 1}, {1, 2}, {2, 3}});
+  NewtonResult stalled = failed("no convergence in 12 iterations", 4e-10);
+  stalled.energy_stall = 8.66e-12;
+  const std::string h = failure_hints(m, raising(10), stalled, linear, trying(2.5));
+  EXPECT_NE(h.find("the residual criterion held and the energy criterion stalled at 8.66e-12"), std::string::npos) << h;
+  EXPECT_NE(h.find("`energy_tolerance: 1e-10` in `solver` (now 1e-12)"), std::string::npos) << h;
+  EXPECT_EQ(h.find("max_iterations"), std::string::npos) << h;
+}
+
 TEST(FailureHints, ATinyRelativeResidualOfADivergedAttemptDoesNotSuggestMoreIterations) {
   // What a volume-controlled tube from rest did before its stiffened start (user guide §6): the
   // first correction flung the wall out, R₀ = 6e14 N, and 40 iterations later ‖R‖ = 0.02 N is

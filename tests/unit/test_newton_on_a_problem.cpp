@@ -245,3 +245,30 @@ TEST(NewtonOnAProblem, AFlatResidualStopsAsStagnating) {
   run(q, off, result);
   EXPECT_EQ(result.failure, "no convergence in 12 iterations");
 }
+
+TEST(NewtonOnAProblem, AnEnergyTestThatStallsIsNamedInTheFailure) {
+  // x = b with the Jacobian 2: each correction halves r, |Δx·r| falls by 4 per iteration. The
+  // residual test (1e-2) holds from iteration 7; an energy test of 1e-30 is never met in 12.
+  Scalars p([](double x) { return x; }, [](double) { return 2.0; }, Eigen::VectorXd::Zero(1),
+            Eigen::VectorXd::Constant(1, 1.0));
+  SolverSettings s;
+  s.residual_tolerance = 1e-2;
+  s.energy_tolerance = 1e-30;
+  s.roundoff_tolerance = 0;
+  NewtonResult result;
+  run(p, s, result);
+  ASSERT_FALSE(result.converged);
+  EXPECT_GT(result.energy_stall, 0.0);
+  EXPECT_NE(result.failure.find("; ‖R‖ met `residual_tolerance` ("), std::string::npos) << result.failure;
+  EXPECT_NE(result.failure.find("the energy test did not (|Δu·R| at "), std::string::npos) << result.failure;
+  EXPECT_NE(result.failure.find("above `energy_tolerance` 1e-30"), std::string::npos) << result.failure;
+  // The residual test not met: no such words.
+  s.residual_tolerance = 1e-12;
+  Scalars q([](double x) { return x; }, [](double) { return 2.0; }, Eigen::VectorXd::Zero(1),
+            Eigen::VectorXd::Constant(1, 1.0));
+  NewtonResult other;
+  run(q, s, other);
+  ASSERT_FALSE(other.converged);
+  EXPECT_EQ(other.energy_stall, 0.0);
+  EXPECT_EQ(other.failure.find("energy test"), std::string::npos) << other.failure;
+}
