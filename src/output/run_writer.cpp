@@ -244,7 +244,13 @@ void RunWriter::note_membrane_states(const Analysis& analysis, const IncrementIn
   compression_noted_.resize(model_.parts.size(), 0);
   stretch_noted_.resize(model_.parts.size(), 0);
   const std::string when = fmt::format("at step {} '{}', increment {}", info.step, info.step_name, info.increment);
-  // One evaluation of each part's points serves both notes.
+  // Every membrane part noted both ways: nothing to evaluate.
+  bool pending = false;
+  for (std::size_t p = 0; p < model_.parts.size(); ++p)
+    pending = pending || (!model_.parts[p].is_solid() && !model_.parts[p].is_shell() &&
+                          !(compression_noted_[p] && stretch_noted_[p]));
+  if (!pending) return;
+  // One evaluation of each part's points serves both notes (and every part's, the scale of load).
   std::vector<std::vector<MembranePoint>> points(model_.parts.size());
   double loaded = 0;  // the largest |principal stress| of any membrane part
   for (std::size_t p = 0; p < model_.parts.size(); ++p) {

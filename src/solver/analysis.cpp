@@ -16,6 +16,15 @@
 
 namespace tunica {
 
+namespace {
+
+/// Some contact pair carries the smoothing the analysis switched on (Checkpoint::contact_smoothing).
+bool any_smoothing(const std::vector<double>& widths) {
+  return std::any_of(widths.begin(), widths.end(), [](double d) { return d > 0; });
+}
+
+}  // namespace
+
 Analysis::Analysis(const Model& model)
     : deck_model_(model), model_(&model), system_(std::make_unique<System>(model)) {
   state_.u.setZero(model.num_dofs());
@@ -72,8 +81,7 @@ void Analysis::install_model(std::unique_ptr<Model> m) {
   // The smoothing the analysis switched on (Checkpoint::contact_smoothing) holds on every model it
   // installs: the deck's gets a copy that carries it.
   const std::vector<double>& smooth = state_.contact_smoothing;
-  const bool smoothed = std::any_of(smooth.begin(), smooth.end(), [](double d) { return d > 0; });
-  if (!m && smoothed) m = std::make_unique<Model>(deck_model_);
+  if (!m && any_smoothing(smooth)) m = std::make_unique<Model>(deck_model_);
   if (m)
     for (std::size_t c = 0; c < smooth.size() && c < m->contacts.size(); ++c)
       if (smooth[c] > 0) m->contacts[c].law.smoothing = smooth[c];
@@ -325,8 +333,7 @@ void Analysis::run(AnalysisObserver& observer, const Checkpoint* resume) {
     if (state_.reference_shift.size() > 0) adopt_reference(state_.reference_shift);
     if (!state_.prestress.empty()) adopt_prestress(state_.prestress);
     // The contact smoothing the run switched on before the restart file was written.
-    if (state_.reference_shift.size() == 0 && state_.prestress.empty() &&
-        std::any_of(state_.contact_smoothing.begin(), state_.contact_smoothing.end(), [](double d) { return d > 0; }))
+    if (state_.reference_shift.size() == 0 && state_.prestress.empty() && any_smoothing(state_.contact_smoothing))
       install_model(nullptr);
     // Which parts are active follows from the step (restart files do not store it).
     state_.loads.step = state_.step_start.step = state_.step;

@@ -643,13 +643,12 @@ std::string contact_convergence_hint(const System& system, const Eigen::VectorXd
   for (int c : pairs) {
     const ContactPair& pair = m.contacts[c];
     if (pair.law.smoothing > 0 || pair.area_chain.size() < 2) continue;
-    const double length = mean_segment(m, pair.area_chain);
     const std::string lu = m.units.display_unit(Dimension::length);
     smoothing = fmt::format(
         "`smoothing: {:.2g} {}` on pair '{}' (10⁻³ of its slave's mean element length) makes the contact pressure C¹ "
         "across the touch, so that nodes at the edge of the contact zone, where the pressure is about zero, stop "
         "entering and leaving (theory manual (9.2)). ",
-        m.units.from_internal(1e-3 * length, lu, Dimension::length), lu, pair.name);
+        m.units.from_internal(auto_smoothing_width(m, c), lu, Dimension::length), lu, pair.name);
     break;
   }
   return fmt::format(

@@ -110,8 +110,8 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
     }
     const bool side = problem.side_conditions_hold(settings.residual_tolerance);
     const bool at_roundoff = rec.residual <= settings.roundoff_tolerance * scale && side;
-    const bool tests = k > 0 && rec.residual <= settings.residual_tolerance * r0 &&
-                       (e1 == 0 || energy <= settings.energy_tolerance * e1) && side;
+    const bool residual_met = k > 0 && rec.residual <= settings.residual_tolerance * r0 && side;
+    const bool tests = residual_met && (e1 == 0 || energy <= settings.energy_tolerance * e1);
     if (at_roundoff || tests) {
       on_iteration(rec);
       result.converged = true;
@@ -133,7 +133,7 @@ NewtonResult newton(NonlinearProblem& problem, LinearSolver& solver, const Solve
     };
     // The residual test of (7.2) holds and the energy test does not: the failure says which.
     const auto energy_stalled = [&] {
-      if (!(k > 0 && rec.residual <= settings.residual_tolerance * r0 && side)) return std::string();
+      if (!residual_met) return std::string();
       result.energy_stall = rec.relative_energy;
       return fmt::format("; ‖R‖ met `residual_tolerance` ({:.3g} ≤ {:g}), the energy test did not (|Δu·R| at "
                          "{:.3g} of |Δu₁·R₀|, above `energy_tolerance` {:g})",
